@@ -1,0 +1,48 @@
+// tracer: a Whitted ray tracer in Scala 3.
+ThisBuild / scalaVersion := "3.8.3"
+ThisBuild / version      := "1.0.0"
+ThisBuild / organization := "tracer"
+
+ThisBuild / scalacOptions ++= Seq(
+  "-deprecation",
+  "-feature",
+  "-unchecked",
+  "-Wunused:all",
+  "-Werror"
+)
+
+lazy val root = project
+  .in(file("."))
+  .settings(
+    name := "tracer",
+    libraryDependencies ++= Seq(
+      "org.scala-lang.modules" %% "scala-xml"        % "2.4.0",
+      "com.github.scopt"       %% "scopt"            % "4.1.0",
+      "org.scalameta"          %% "munit"            % "1.2.1"  % Test,
+      "org.scalameta"          %% "munit-scalacheck" % "1.2.0"  % Test,
+      "org.scalacheck"         %% "scalacheck"       % "1.19.0" % Test
+    ),
+    Compile / mainClass        := Some("tracer.cli.Main"),
+    assembly / mainClass       := Some("tracer.cli.Main"),
+    assembly / assemblyJarName := "tracer.jar",
+    // System tests start the real command; they need their own JVM and the working directory.
+    Test / fork          := true,
+    Test / baseDirectory := (ThisBuild / baseDirectory).value,
+    Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
+    Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
+    console / initialCommands := "import tracer.*, tracer.math.*, tracer.image.*, " +
+      "tracer.geometry.*, tracer.scene.*, tracer.render.*",
+    Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
+  )
+
+lazy val bench = project
+  .in(file("bench"))
+  .dependsOn(root)
+  .enablePlugins(JmhPlugin)
+  .settings(name := "tracer-bench", publish / skip := true)
+
+// The one command that checks everything: formatting, then every test.
+addCommandAlias(
+  "check",
+  "; scalafmtCheckAll ; scalafmtSbtCheck ; Test/compile ; bench/compile ; test"
+)

@@ -1,0 +1,49 @@
+package tracer.image
+
+/** An RGB colour with channels as doubles: 0..1 is the displayable range, but values are not
+  * limited while light is being added up (rendering.md, From colour to bytes).
+  */
+final case class Colour(r: Double, g: Double, b: Double):
+
+  /** The channel-wise sum: light from two sources together. */
+  inline def +(that: Colour): Colour = Colour(r + that.r, g + that.g, b + that.b)
+
+  /** Every channel scaled by `s`. */
+  inline def *(s: Double): Colour = Colour(r * s, g * s, b * s)
+
+  /** The channel-wise product: a surface colour lit by a light colour. */
+  inline def *(that: Colour): Colour = Colour(r * that.r, g * that.g, b * that.b)
+
+  /** The largest of the three channels. */
+  def max: Double = Math.max(r, Math.max(g, b))
+
+  /** This colour brought into 0..1 keeping its hue: when a channel exceeds 1, all three are
+    * divided by the largest. Negative channels (which no scene produces) become 0.
+    */
+  def inRange: Colour =
+    val m    = max
+    val kept = if m > 1 then Colour(r / m, g / m, b / m) else this
+    if kept.r >= 0 && kept.g >= 0 && kept.b >= 0 then kept
+    else Colour(Math.max(kept.r, 0), Math.max(kept.g, 0), Math.max(kept.b, 0))
+
+  /** A compact `rgb(r, g, b)` rendering for messages. */
+  override def toString: String = s"rgb($r, $g, $b)"
+
+/** Named colours and the byte conversion of [[Colour]]. */
+object Colour:
+  /** No light at all. */
+  val Black: Colour = Colour(0, 0, 0)
+
+  /** Full light in every channel. */
+  val White: Colour = Colour(1, 1, 1)
+
+  /** A grey of the given brightness in every channel. */
+  def grey(level: Double): Colour = Colour(level, level, level)
+
+  /** The sample round(maxval·c) for a channel value c in 0..1, halves rounding up. */
+  def quantise(c: Double, maxval: Int): Int =
+    Math.min(maxval, Math.max(0, Math.floor(c * maxval + 0.5).toInt))
+
+  /** A colour from samples scaled by 1/`maxval` (PPM's rule). */
+  def fromSamples(r: Int, g: Int, b: Int, maxval: Int): Colour =
+    Colour(r.toDouble / maxval, g.toDouble / maxval, b.toDouble / maxval)
