@@ -11,6 +11,9 @@ final case class Colour(r: Double, g: Double, b: Double):
   /** Every channel scaled by `s`. */
   inline def *(s: Double): Colour = Colour(r * s, g * s, b * s)
 
+  /** Every channel divided by `s`. */
+  inline def /(s: Double): Colour = Colour(r / s, g / s, b / s)
+
   /** The channel-wise product: a surface colour lit by a light colour. */
   inline def *(that: Colour): Colour = Colour(r * that.r, g * that.g, b * that.b)
 

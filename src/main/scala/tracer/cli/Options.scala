@@ -1,0 +1,135 @@
+package tracer.cli
+
+import scopt.{OEffect, OParser}
+
+/** The command line as given: each optional value is `None` when its option was absent.
+  *
+  * @param output  the image file to write (OUTPUT)
+  * @param quick   `-q`, quick mode
+  * @param depth   `-r d`, the reflection depth
+  * @param timing  `-t`, print `Tracetime: N ms`
+  * @param threads `-p n`, the number of render threads
+  * @param zoom    `-z`, the camera zoom Z
+  * @param columns `-x`, the image width in pixels X
+  * @param rows    `-y`, the image height in pixels Y
+  * @param width   `-w`, the image width in world units W
+  * @param height  `-h`, the image height in world units H
+  * @param samples `-a n`, n × n antialiasing samples a pixel
+  */
+final case class Options(
+    output: String = "",
+    quick: Boolean = false,
+    depth: Int = 5,
+    timing: Boolean = false,
+    threads: Option[Int] = None,
+    zoom: Option[Double] = None,
+    columns: Option[Int] = None,
+    rows: Option[Int] = None,
+    width: Option[Double] = None,
+    height: Option[Double] = None,
+    samples: Int = 1
+)
+
+/** What the command line asks for: a render, the usage text, or a usage error. */
+enum Command:
+  /** Render with these options. */
+  case Render(options: Options)
+
+  /** Print this usage text and exit successfully (`--help`). */
+  case Help(usage: String)
+
+  /** Report this usage error and exit with status 2. */
+  case UsageError(message: String)
+
+/** The `tracer` command line (cli.md), parsed with scopt. */
+object Options:
+
+  /** Parses `args` into the command they ask for. Never prints and never exits. */
+  def parse(args: Seq[String]): Command =
+    val (result, effects) = OParser.runParser(parser, args, Options())
+    val errors            = effects.collect { case OEffect.ReportError(message) => message }
+    if effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false } then
+      Command.Help(usage)
+    else
+      (result, errors) match
+        case (Some(options), Nil) => Command.Render(options)
+        case (_, first :: _)      => Command.UsageError(first)
+        case (None, Nil)          => Command.UsageError("invalid arguments")
+
+  /** The usage text of `--help`. */
+  def usage: String = OParser.usage(parser)
+
+  private val builder = OParser.builder[Options]
+
+  private def positiveDouble(name: String)(v: Double): Either[String, Unit] =
+    if v > 0 && v.isFinite then Right(())
+    else Left(s"$name must be a number greater than 0, got $v")
+
+  private def atLeast(name: String, min: Int)(v: Int): Either[String, Unit] =
+    if v >= min then Right(()) else Left(s"$name must be an integer of at least $min, got $v")
+
+  private val parser =
+    import builder.*
+    OParser.sequence(
+      programName("tracer"),
+      head("tracer: renders the XML scene on standard input to an image file (PNG or PPM)"),
+      note("usage: tracer [options] OUTPUT < scene.xml\n"),
+      opt[Unit]('q', "quick")
+        .action((_, o) => o.copy(quick = true))
+        .text("quick mode: no shadows, no reflection"),
+      opt[Int]('r', "depth")
+        .valueName("d")
+        .validate(atLeast("-r", 0))
+        .action((v, o) => o.copy(depth = v))
+        .text("reflection depth, the most reflections a ray can make (default 5)"),
+      opt[Unit]('t', "time")
+        .action((_, o) => o.copy(timing = true))
+        .text("print 'Tracetime: N ms', the rendering time, on standard output"),
+      opt[Int]('p', "threads")
+        .valueName("n")
+        .validate(atLeast("-p", 1))
+        .action((v, o) => o.copy(threads = Some(v)))
+        .text("render with n threads (default: the number of processors)"),
+      opt[Double]('z', "zoom")
+        .valueName("zoom")
+        .validate(positiveDouble("-z"))
+        .action((v, o) => o.copy(zoom = Some(v)))
+        .text("camera zoom Z, overrides the scene"),
+      opt[Int]('x', "xpix")
+        .valueName("xpix")
+        .validate(atLeast("-x", 1))
+        .action((v, o) => o.copy(columns = Some(v)))
+        .text("image width in pixels X"),
+      opt[Int]('y', "ypix")
+        .valueName("ypix")
+        .validate(atLeast("-y", 1))
+        .action((v, o) => o.copy(rows = Some(v)))
+        .text("image height in pixels Y"),
+      opt[Double]('w', "width")
+        .valueName("width")
+        .validate(positiveDouble("-w"))
+        .action((v, o) => o.copy(width = Some(v)))
+        .text("image width W in world units, overrides the scene"),
+      opt[Double]('h', "height")
+        .valueName("height")
+        .validate(positiveDouble("-h"))
+        .action((v, o) => o.copy(height = Some(v)))
+        .text("image height H in world units, overrides the scene"),
+      opt[Int]('a', "antialias")
+        .valueName("n")
+        .validate(v =>
+          if v >= 1 && v <= 16 then Right(())
+          else Left(s"-a must be an integer from 1 to 16, got $v")
+        )
+        .action((v, o) => o.copy(samples = v))
+        .text("antialiasing: average n×n samples a pixel, 1 to 16 (default 1)"),
+      help("help").text("print this usage and exit"),
+      arg[String]("OUTPUT")
+        .action((v, o) => o.copy(output = v))
+        .text("the image file to write: .png for PNG, anything else for binary PPM"),
+      note(
+        "\nGiven three of -w -h -x -y, the fourth keeps the picture undistorted; given fewer," +
+          "\nthe scene's width and height and 640 pixels fill in. Exit status: 0 success," +
+          "\n1 failure (bad scene, unreadable texture, unwritable output), 2 usage error."
+      )
+    )

@@ -1,0 +1,63 @@
+package tracer.cli
+
+import java.io.PrintStream
+import java.nio.file.{Files, Path}
+import java.util.concurrent.atomic.AtomicInteger
+import java.util.concurrent.{Executors, ScheduledExecutorService, TimeUnit}
+
+/** A progress line on a terminal: `tracer: rendering 45% (216 of 480 rows)`, shown only once a
+  * render has taken more than a moment, redrawn in place, and erased when the render ends.
+  */
+final class Progress private (out: PrintStream, totalRows: Int, timer: ScheduledExecutorService):
+  private val done = AtomicInteger(0)
+
+  /** Counts one finished row; called from the render threads. */
+  def rowDone(): Unit = done.incrementAndGet()
+
+  private def draw(): Unit =
+    val rows = done.get
+    out.print(s"\rtracer: rendering ${100L * rows / totalRows}% ($rows of $totalRows rows)")
+    out.flush()
+
+  /** Stops reporting and erases the line. */
+  def finish(): Unit =
+    timer.shutdownNow()
+    timer.awaitTermination(1, TimeUnit.SECONDS)
+    out.print("\r\u001b[K")
+    out.flush()
+
+/** Starts progress reports where a person can see them. */
+object Progress:
+
+  /** How long a render runs before progress is shown. */
+  val DelayMillis: Long = 1000
+
+  /** How often the line is redrawn. */
+  val PeriodMillis: Long = 250
+
+  /** A progress reporter drawing on `out`, or `None` unless `out` is this process's standard
+    * error and that is a terminal.
+    */
+  def start(out: PrintStream, totalRows: Int): Option[Progress] =
+    Option.when(out eq System.err)(()).filter(_ => stderrIsTerminal).map { _ =>
+      val timer = Executors.newSingleThreadScheduledExecutor { task =>
+        val thread = Thread(task, "tracer-progress")
+        thread.setDaemon(true)
+        thread
+      }
+      val progress = Progress(out, totalRows, timer)
+      timer.scheduleAtFixedRate(
+        () => progress.draw(),
+        DelayMillis,
+        PeriodMillis,
+        TimeUnit.MILLISECONDS
+      )
+      progress
+    }
+
+  /** True when file descriptor 2 is a terminal (Linux: it links to a tty device). */
+  private def stderrIsTerminal: Boolean =
+    try
+      val target = Files.readSymbolicLink(Path.of("/proc/self/fd/2")).toString
+      target.startsWith("/dev/pts/") || target.startsWith("/dev/tty")
+    catch case _: Exception => false

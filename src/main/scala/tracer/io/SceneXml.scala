@@ -1,0 +1,310 @@
+package tracer.io
+
+import scala.collection.mutable
+import scala.xml.{Elem, Text}
+import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.image.{Bitmap, Colour}
+import tracer.math.Vec3
+import tracer.scene.*
+
+/** Reads scenes in the XML format of `scene-format.md` into [[tracer.scene.Scene]] values. */
+object SceneXml:
+
+  /** Loads the image a `<texture file="…">` names, or says why it cannot. */
+  type TextureLoader = String => Either[String, Bitmap]
+
+  /** Parses a scene document. Every error names the element, its line and what is wrong;
+    * textures are read through `loadTexture`, each distinct file once.
+    */
+  def parse(text: String, loadTexture: TextureLoader): Either[SceneError, Scene] =
+    XmlDocument.parse(text).flatMap(doc => SceneReader(doc, loadTexture).scene)
+
+  /** Parses a scene document from its bytes (the encoding comes from its XML declaration). */
+  def parse(bytes: Array[Byte], loadTexture: TextureLoader): Either[SceneError, Scene] =
+    XmlDocument.parse(bytes).flatMap(doc => SceneReader(doc, loadTexture).scene)
+
+/** One element of the document with its line, for messages. */
+private final case class Element(node: Elem, line: Option[Int]):
+  def name: String = node.label
+
+  /** An error about this element. */
+  def error(message: String): SceneError = SceneError(line, name, message)
+
+  /** A failed result with an error about this element. */
+  def fail[A](message: String): Either[SceneError, A] = Left(error(message))
+
+  /** The raw text of attribute `key`, if present. */
+  def attribute(key: String): Option[String] = node.attribute(key).map(_.text)
+
+/** Walks one parsed document and builds the scene, stopping at the first error. */
+private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureLoader):
+  private type Result[A] = Either[SceneError, A]
+  private val textures = mutable.Map.empty[String, Result[Texture]]
+
+  def scene: Result[Scene] =
+    val root = element(doc.root)
+    for
+      _ <- if root.name == "scene" then Right(()) else root.fail("the root element must be <scene>")
+      children   <- contents(root, attributes = Set(), children = SceneChildren)
+      camera     <- exactlyOne(root, children, "camera").flatMap(camera)
+      background <- atMostOne(root, children, "background").flatMap(
+        _.fold(Right(Colour.Black))(colour(_, 1))
+      )
+      lights  <- traverse(children.filter(_.name == "light"))(light)
+      objects <- traverse(children.filter(c => ShapeNames(c.name)))(sceneObject)
+    yield Scene(camera, background, lights, objects)
+
+  private val ShapeNames    = Set("sphere", "plane", "triangle")
+  private val SceneChildren = Set("camera", "background", "light") ++ ShapeNames
+
+  private def camera(e: Element): Result[Camera] =
+    for
+      children <- contents(e, Set("zoom", "width", "height"), Set("location", "lookat", "up"))
+      zoom     <- positive(e, "zoom", Camera.DefaultZoom)
+      width    <- positive(e, "width", Camera.DefaultWidth)
+      height   <- positive(e, "height", Camera.DefaultHeight)
+      location <- requiredVector(e, children, "location")
+      lookAt   <- requiredVector(e, children, "lookat")
+      up       <- optionalVector(e, children, Vec3.UnitY, "up")
+      _        <-
+        if location != lookAt then Right(())
+        else e.fail(s"<lookat> must differ from <location>, both are $location")
+      _ <-
+        if up.cross(lookAt - location).normalised.isDefined then Right(())
+        else e.fail(s"<up> $up is parallel to the viewing direction ${lookAt - location}")
+    yield Camera(location, lookAt, up, zoom, width, height)
+
+  private def light(e: Element): Result[Light] =
+    for
+      children <- contents(e, Set(), Set("location", "colour", "color"))
+      location <- requiredVector(e, children, "location")
+      colour   <- atMostOne(e, children, "colour", "color").flatMap(
+        _.fold(Right(Colour.White))(lightColour)
+      )
+    yield Light(location, colour)
+
+  private def sceneObject(e: Element): Result[SceneObject] = e.name match
+    case "sphere" => sphere(e)
+    case "plane"  => plane(e)
+    case _        => triangle(e)
+
+  private def sphere(e: Element): Result[SceneObject] =
+    for
+      children <- contents(e, Set("radius"), Set("centre", "center", "pole", "equator", "surface"))
+      radius   <- requiredNumber(e, "radius")
+      _        <-
+        if radius > 0 then Right(())
+        else e.fail(s"attribute radius must be greater than 0, got $radius")
+      centre <- atMostOne(e, children, "centre", "center")
+        .flatMap(required(e, _, "<centre>"))
+        .flatMap(vector)
+      pole    <- optionalNonZero(e, children, Vec3.UnitY, "pole")
+      equator <- optionalNonZero(e, children, Vec3.UnitZ, "equator")
+      _       <-
+        val cosine = Math.abs(pole.normalised.get.dot(equator.normalised.get))
+        if cosine <= Sphere.RightAngleTolerance then Right(())
+        else
+          e.fail(s"<pole> $pole and <equator> $equator must be at right angles (|cos| = $cosine)")
+      surface <- surface(e, children, texturable = true)
+    yield SceneObject(Sphere(centre, radius, pole, equator), surface)
+
+  private def plane(e: Element): Result[SceneObject] =
+    for
+      children <- contents(e, Set("distance"), Set("normal", "point", "surface"))
+      normal   <- requiredVector(e, children, "normal")
+      _        <-
+        if normal.normalised.isDefined then Right(())
+        else e.fail("<normal> must not be the zero vector")
+      point    <- atMostOne(e, children, "point")
+      distance <- number(e, "distance")
+      plane    <- (point, distance) match
+        case (Some(p), None)    => vector(p).map(Plane.through(_, normal))
+        case (None, Some(d))    => Right(Plane.at(normal, d))
+        case (Some(_), Some(_)) => e.fail("give either a <point> or a distance attribute, not both")
+        case (None, None)       => e.fail("needs a <point> or a distance attribute")
+      surface <- surface(e, children, texturable = false)
+    yield SceneObject(plane, surface)
+
+  private def triangle(e: Element): Result[SceneObject] =
+    for
+      children     <- contents(e, Set(), Set("corner", "origin", "a", "b", "surface"))
+      corners      <- traverse(children.filter(_.name == "corner"))(vector)
+      legs         <- traverse(List("origin", "a", "b"))(name => atMostOne(e, children, name))
+      (t0, t1, t2) <- (corners, legs) match
+        case (List(t0, t1, t2), List(None, None, None)) => Right((t0, t1, t2))
+        case (Nil, List(Some(o), Some(a), Some(b)))     =>
+          for o <- vector(o); a <- vector(a); b <- vector(b) yield (o, o + a, o + b)
+        case (Nil, _) => e.fail("needs three <corner> elements, or <origin>, <a> and <b>")
+        case (_, List(None, None, None)) =>
+          e.fail(s"needs exactly three <corner> elements, got ${corners.length}")
+        case _ => e.fail("give three <corner> elements or <origin>, <a> and <b>, not both")
+      _ <-
+        if Triangle.isProper(t0, t1, t2) then Right(())
+        else e.fail(s"the corners $t0, $t1, $t2 are collinear")
+      surface <- surface(e, children, texturable = true)
+    yield SceneObject(Triangle(t0, t1, t2), surface)
+
+  private def surface(
+      owner: Element,
+      siblings: List[Element],
+      texturable: Boolean
+  ): Result[Surface] =
+    atMostOne(owner, siblings, "surface").flatMap {
+      case None    => Right(Surface())
+      case Some(e) =>
+        for
+          children <- contents(e, Set("diffuse", "reflection"), Set("colour", "color", "texture"))
+          diffuse  <- number(e, "diffuse").map(_.getOrElse(1.0))
+          _        <-
+            if diffuse >= 0 then Right(())
+            else e.fail(s"attribute diffuse must be at least 0, got $diffuse")
+          reflection <- number(e, "reflection").map(_.getOrElse(0.0))
+          _          <-
+            if reflection >= 0 && reflection <= 1 then Right(())
+            else e.fail(s"attribute reflection must be from 0 to 1, got $reflection")
+          colour <- atMostOne(e, children, "colour", "color").flatMap(
+            _.fold(Right(Colour.White))(colour(_, 1))
+          )
+          texture <- atMostOne(e, children, "texture").flatMap(
+            traverseOption(_)(texture(_, owner, texturable))
+          )
+        yield Surface(diffuse, reflection, texture.fold(Pigment.Solid(colour))(Pigment.Textured(_)))
+    }
+
+  private def texture(e: Element, owner: Element, texturable: Boolean): Result[Texture] =
+    for
+      _ <- contents(e, Set("file"), Set())
+      _ <-
+        if texturable then Right(())
+        else e.fail(s"textures are allowed on spheres and triangles only, not <${owner.name}>")
+      file    <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
+      texture <- textures.getOrElseUpdate(
+        file,
+        loadTexture(file)
+          .map(Texture(_, file))
+          .left
+          .map(why => e.error(s"cannot read texture file '$file': $why"))
+      )
+    yield texture
+
+  private def vector(e: Element): Result[Vec3] =
+    for
+      _ <- contents(e, Set("x", "y", "z"), Set())
+      x <- requiredNumber(e, "x")
+      y <- requiredNumber(e, "y")
+      z <- requiredNumber(e, "z")
+    yield Vec3(x, y, z)
+
+  /** A colour element with channels from 0 to `max`. */
+  private def colour(e: Element, max: Double): Result[Colour] =
+    for
+      _        <- contents(e, Set("r", "g", "b"), Set())
+      channels <- traverse(List("r", "g", "b")) { key =>
+        requiredNumber(e, key).flatMap { c =>
+          if c >= 0 && c <= max then Right(c)
+          else e.fail(s"attribute $key must be from 0 to $max, got $c")
+        }
+      }
+    yield Colour(channels(0), channels(1), channels(2))
+
+  /** A light's colour: channels at least 0, with no upper limit. */
+  private def lightColour(e: Element): Result[Colour] = colour(e, Double.MaxValue)
+
+  private def requiredVector(owner: Element, children: List[Element], name: String): Result[Vec3] =
+    atMostOne(owner, children, name).flatMap(required(owner, _, s"<$name>")).flatMap(vector)
+
+  private def optionalVector(
+      owner: Element,
+      children: List[Element],
+      default: Vec3,
+      name: String
+  ): Result[Vec3] =
+    atMostOne(owner, children, name).flatMap(_.fold(Right(default))(vector))
+
+  private def optionalNonZero(
+      owner: Element,
+      children: List[Element],
+      default: Vec3,
+      name: String
+  ): Result[Vec3] =
+    atMostOne(owner, children, name).flatMap {
+      case None    => Right(default)
+      case Some(e) =>
+        vector(e).flatMap(v =>
+          if v.normalised.isDefined then Right(v) else e.fail("must not be the zero vector")
+        )
+    }
+
+  /** Checks `e`'s attributes and child elements against the allowed names and returns the
+    * children in document order. Text other than whitespace is an error.
+    */
+  private def contents(
+      e: Element,
+      attributes: Set[String],
+      children: Set[String]
+  ): Result[List[Element]] =
+    val unknownAttribute = e.node.attributes.asAttrMap.keys.toList.sorted.find(k => !attributes(k))
+    val strayText        = e.node.child.collectFirst {
+      case t: Text if t.text.trim.nonEmpty => t.text.trim
+    }
+    val elements = e.node.child.collect { case c: Elem => element(c) }.toList
+    unknownAttribute match
+      case Some(key) => e.fail(s"unknown attribute $key")
+      case None      =>
+        strayText match
+          case Some(text) => e.fail(s"unexpected text '${text.take(20)}'")
+          case None       =>
+            elements.find(c => !children(c.name)) match
+              case Some(c) => c.fail(s"unknown element inside <${e.name}>")
+              case None    => Right(elements)
+
+  private def exactlyOne(owner: Element, children: List[Element], name: String): Result[Element] =
+    atMostOne(owner, children, name).flatMap(required(owner, _, s"<$name>"))
+
+  /** The one child named by any of `names` (aliases), if there is one; two is an error. */
+  private def atMostOne(
+      owner: Element,
+      children: List[Element],
+      names: String*
+  ): Result[Option[Element]] =
+    children.filter(c => names.contains(c.name)) match
+      case Nil              => Right(None)
+      case one :: Nil       => Right(Some(one))
+      case _ :: second :: _ =>
+        second.fail(s"<${owner.name}> may have only one <${names.mkString("> or <")}>")
+
+  private def required[A](owner: Element, value: Option[A], what: String): Result[A] =
+    value.toRight(owner.error(s"missing $what"))
+
+  private def number(e: Element, key: String): Result[Option[Double]] =
+    traverseOption(e.attribute(key)) { raw =>
+      val text  = raw.trim
+      val value = if SceneReader.Decimal.matches(text) then text.toDoubleOption else None
+      value
+        .filter(_.isFinite)
+        .toRight(e.error(s"attribute $key must be a finite decimal number, got '$raw'"))
+    }
+
+  private def requiredNumber(e: Element, key: String): Result[Double] =
+    number(e, key).flatMap(required(e, _, s"attribute $key"))
+
+  private def positive(e: Element, key: String, default: Double): Result[Double] =
+    number(e, key).flatMap {
+      case None             => Right(default)
+      case Some(v) if v > 0 => Right(v)
+      case Some(v)          => e.fail(s"attribute $key must be greater than 0, got $v")
+    }
+
+  private def element(node: Elem): Element = Element(node, doc.lineOf(node))
+
+  private def traverse[A, B](items: List[A])(f: A => Result[B]): Result[List[B]] =
+    items.foldRight[Result[List[B]]](Right(Nil))((item, rest) =>
+      for b <- f(item); bs <- rest yield b :: bs
+    )
+
+  private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
+    item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
+
+private object SceneReader:
+  /** A decimal number as the scene format allows it: `-1`, `0.25`, `2.5e-3`. */
+  val Decimal = raw"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?".r

@@ -1,0 +1,27 @@
+package tracer.io
+
+import java.nio.file.{Files, NoSuchFileException, Path, AccessDeniedException}
+import tracer.image.{Bitmap, ImageFile}
+
+/** Loads texture images from files, relative paths resolved against a base directory. */
+object TextureFiles:
+
+  /** A loader for [[SceneXml.parse]] reading PPM or PNG files, relative to `base` (by default the
+    * current working directory, as the scene arrives on standard input and has no directory).
+    */
+  def loader(base: Path = Path.of("").toAbsolutePath): SceneXml.TextureLoader =
+    name => read(base.resolve(name))
+
+  /** The image in file `path`, recognised by its content, or why it cannot be read. */
+  def read(path: Path): Either[String, Bitmap] =
+    val bytes =
+      try
+        if Files.isDirectory(path) then Left("it is a directory")
+        else Right(Files.readAllBytes(path))
+      catch
+        case _: NoSuchFileException   => Left("no such file")
+        case _: AccessDeniedException => Left("permission denied")
+        case e: java.io.IOException   =>
+          Left(Option(e.getMessage).getOrElse(e.getClass.getSimpleName))
+        case _: OutOfMemoryError => Left("the file is too large to load")
+    bytes.flatMap(ImageFile.decode)

@@ -1,0 +1,31 @@
+package tracer.render
+
+import tracer.geometry.Ray
+import tracer.math.Vec3
+import tracer.scene.Camera
+
+/** The camera's geometry, computed once per picture: the rays through points of the image plane
+  * (course text, section 4, equations 8–16).
+  */
+final class Projection(camera: Camera, config: CameraConfig):
+  // Equation 10: the viewing direction c.
+  private val forward = (camera.lookAt - camera.location).normalised.get
+  // Equations 11–12: the picture's right and down directions Cr and Cd.
+  private val right = camera.up.cross(forward).normalised.get
+  private val down  = right.cross(forward).normalised.get
+  // Equation 13: the upper left corner Cc of the image plane.
+  private val corner =
+    camera.location + forward * config.zoom - right * (config.width / 2) - down * (config.height / 2)
+  // Equations 8–9: the resolution Rx and Ry, world units a pixel.
+  private val rx = config.width / config.columns
+  private val ry = config.height / config.rows
+
+  /** The primary ray through the image-plane point (x, y) in pixel units: pixel (i, j)'s centre
+    * is (i + 0.5, j + 0.5), row 0 at the top (equations 14–16).
+    */
+  def ray(x: Double, y: Double): Ray =
+    val p = corner + right * (rx * x) + down * (ry * y)
+    Ray(camera.location, (p - camera.location).normalisedOr(forward))
+
+  /** The unit right, down and forward directions of the picture (Cr, Cd, c). */
+  def basis: (Vec3, Vec3, Vec3) = (right, down, forward)

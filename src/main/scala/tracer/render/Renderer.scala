@@ -1,0 +1,78 @@
+package tracer.render
+
+import java.util.concurrent.{Executors, ThreadFactory}
+import scala.concurrent.duration.Duration
+import scala.concurrent.{Await, ExecutionContext, Future}
+import tracer.image.{Bitmap, Colour}
+import tracer.scene.Scene
+
+/** Turns a scene into a picture: a pure function of the scene and the camera configuration. */
+object Renderer:
+
+  /** The thread count used when none is given: the machine's available processors. */
+  def defaultThreads: Int = Runtime.getRuntime.availableProcessors
+
+  /** Renders `scene` as `config` says, on a fixed pool of `threads` threads, one row a task.
+    *
+    * The picture depends only on `scene` and `config`, never on `threads`. `onRow` is called once
+    * for every finished row, from the worker threads (for progress reports).
+    */
+  def render(
+      scene: Scene,
+      config: CameraConfig,
+      threads: Int = defaultThreads,
+      onRow: () => Unit = () => ()
+  ): Bitmap =
+    require(threads >= 1, s"threads must be at least 1, got $threads")
+    val frame = Frame(scene, config)
+    val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
+    try
+      given ExecutionContext = ExecutionContext.fromExecutorService(pool)
+      // A queue of many small row tasks keeps every thread busy however uneven the rows are.
+      val rows = Future.traverse(0 until config.rows) { y =>
+        Future(RowFailure.guard { val row = frame.row(y); onRow(); row })
+      }
+      Bitmap.stack(Await.result(rows, Duration.Inf))
+    catch case RowFailure(cause) => throw cause
+    finally pool.shutdownNow()
+
+  /** Renders `scene` on the calling thread alone. */
+  def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
+    val frame = Frame(scene, config)
+    Bitmap.stack((0 until config.rows).map(frame.row))
+
+  /** The parts of a picture that every row shares, built once. */
+  private final class Frame(scene: Scene, config: CameraConfig):
+    private val projection = Projection(scene.camera, config)
+    private val shading    = Shading(World(scene), config.mode)
+    private val n          = config.samples
+
+    /** Row `y` of the picture, as a bitmap one pixel high. */
+    def row(y: Int): Bitmap = Bitmap.tabulate(config.columns, 1)((x, _) => pixel(x, y))
+
+    /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
+    private def pixel(x: Int, y: Int): Colour =
+      val samples =
+        for j <- 0 until n; i <- 0 until n
+        yield shading
+          .colour(projection.ray(x + (i + 0.5) / n, y + (j + 0.5) / n), config.depth)
+          .inRange
+      samples.reduce(_ + _) / (n * n)
+
+  /** Names the worker threads and lets the JVM exit without waiting for them. */
+  private object WorkerThreads extends ThreadFactory:
+    def newThread(task: Runnable): Thread =
+      val thread = Thread(task, "tracer-render")
+      thread.setDaemon(true)
+      thread
+
+/** Carries a fatal error (such as running out of memory) out of a row task: a Future would
+  * otherwise never complete, and the render would wait forever.
+  */
+private final case class RowFailure(cause: Throwable) extends Exception(cause)
+
+private object RowFailure:
+  /** Runs `body`, turning a fatal JVM error into a [[RowFailure]] the Future can carry. */
+  inline def guard[A](inline body: A): A =
+    try body
+    catch case e: VirtualMachineError => throw RowFailure(e)

@@ -1,0 +1,57 @@
+package tracer.render
+
+import tracer.geometry.{Hit, Ray, Shape}
+import tracer.image.Colour
+import tracer.scene.Pigment
+
+/** The colour a ray brings back from the world (rendering.md, Colour of a hit). */
+final class Shading(world: World, mode: ShadingMode):
+
+  /** The colour seen along `ray`, allowing `depth` more reflections. */
+  def colour(ray: Ray, depth: Int): Colour =
+    val i = world.nearest(ray)
+    if i < 0 then world.background
+    else
+      val shape = world.shape(i)
+      val hit   = Shape.hitAt(shape, ray, Shape.distance(shape, ray))
+      mode match
+        case ShadingMode.Quick => pigment(i, hit) * Math.abs(hit.normal.dot(ray.direction))
+        case ShadingMode.Full  => lit(i, hit) + reflected(i, hit, ray, depth)
+
+  /** The sum over the lights visible from the hit of C ⊙ colour(L) · diffuse · |rn · Sd|. */
+  private def lit(i: Int, hit: Hit): Colour =
+    val surface = world.surface(i)
+    val colour  = pigment(i, hit)
+    // Equation 40: start shadow rays just off the surface, on the side the ray came from.
+    val s0 = hit.point + hit.normal * Shading.Epsilon
+    world.lights.foldLeft(Colour.Black) { (sum, light) =>
+      val toLight = light.location - s0
+      val reach   = toLight.length
+      // Equation 41; a light exactly at S0 shines straight along the normal.
+      val sd = if reach > 0 then toLight / reach else hit.normal
+      if world.occluded(Ray(s0, sd), reach) then sum
+      else sum + colour * light.colour * surface.diffuse * Math.abs(hit.normal.dot(sd))
+    }
+
+  /** reflection · colour(reflected ray, depth − 1), or black when the surface is no mirror or the
+    * depth is spent (equations 43–44).
+    */
+  private def reflected(i: Int, hit: Hit, ray: Ray, depth: Int): Colour =
+    val reflection = world.surface(i).reflection
+    if reflection <= 0 || depth <= 0 then Colour.Black
+    else
+      val origin    = hit.point + hit.normal * Shading.Epsilon
+      val direction = ray.direction - hit.normal * (2 * hit.normal.dot(ray.direction))
+      colour(Ray(origin, direction), depth - 1) * reflection
+
+  /** The surface colour C at the hit: the texel there, or the plain colour. */
+  private def pigment(i: Int, hit: Hit): Colour = world.surface(i).pigment match
+    case Pigment.Solid(c)          => c
+    case Pigment.Textured(texture) =>
+      val uv = Shape.surfaceCoordinates(world.shape(i), hit.point)
+      texture.colourAt(uv.u, uv.v)
+
+/** Constants of the shading model. */
+object Shading:
+  /** ε, the offset of shadow and reflected ray origins from the surface (world units). */
+  val Epsilon: Double = 1e-4
