@@ -72,8 +72,7 @@ object Options:
     import builder.*
     OParser.sequence(
       programName("tracer"),
-      head("tracer: renders the XML scene on standard input to an image file (PNG or PPM)"),
-      note("usage: tracer [options] OUTPUT < scene.xml\n"),
+      head("tracer: renders the XML scene on standard input (tracer [options] OUTPUT < scene.xml)"),
       opt[Unit]('q', "quick")
         .action((_, o) => o.copy(quick = true))
         .text("quick mode: no shadows, no reflection"),

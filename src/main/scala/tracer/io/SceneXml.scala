@@ -38,6 +38,7 @@ private final case class Element(node: Elem, line: Option[Int]):
 
 /** Walks one parsed document and builds the scene, stopping at the first error. */
 private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureLoader):
+  import SceneReader.show
   private type Result[A] = Either[SceneError, A]
   private val textures = mutable.Map.empty[String, Result[Texture]]
 
@@ -94,7 +95,7 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
       radius   <- requiredNumber(e, "radius")
       _        <-
         if radius > 0 then Right(())
-        else e.fail(s"attribute radius must be greater than 0, got $radius")
+        else e.fail(s"attribute radius must be greater than 0, got ${show(radius)}")
       centre <- atMostOne(e, children, "centre", "center")
         .flatMap(required(e, _, "<centre>"))
         .flatMap(vector)
@@ -157,11 +158,11 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
           diffuse  <- number(e, "diffuse").map(_.getOrElse(1.0))
           _        <-
             if diffuse >= 0 then Right(())
-            else e.fail(s"attribute diffuse must be at least 0, got $diffuse")
+            else e.fail(s"attribute diffuse must be at least 0, got ${show(diffuse)}")
           reflection <- number(e, "reflection").map(_.getOrElse(0.0))
           _          <-
             if reflection >= 0 && reflection <= 1 then Right(())
-            else e.fail(s"attribute reflection must be from 0 to 1, got $reflection")
+            else e.fail(s"attribute reflection must be from 0 to 1, got ${show(reflection)}")
           colour <- atMostOne(e, children, "colour", "color").flatMap(
             _.fold(Right(Colour.White))(colour(_, 1))
           )
@@ -201,14 +202,15 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
       _        <- contents(e, Set("r", "g", "b"), Set())
       channels <- traverse(List("r", "g", "b")) { key =>
         requiredNumber(e, key).flatMap { c =>
+          val range = if max.isInfinite then "at least 0" else s"from 0 to ${show(max)}"
           if c >= 0 && c <= max then Right(c)
-          else e.fail(s"attribute $key must be from 0 to $max, got $c")
+          else e.fail(s"attribute $key must be $range, got ${show(c)}")
         }
       }
     yield Colour(channels(0), channels(1), channels(2))
 
   /** A light's colour: channels at least 0, with no upper limit. */
-  private def lightColour(e: Element): Result[Colour] = colour(e, Double.MaxValue)
+  private def lightColour(e: Element): Result[Colour] = colour(e, Double.PositiveInfinity)
 
   private def requiredVector(owner: Element, children: List[Element], name: String): Result[Vec3] =
     atMostOne(owner, children, name).flatMap(required(owner, _, s"<$name>")).flatMap(vector)
@@ -292,19 +294,26 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
     number(e, key).flatMap {
       case None             => Right(default)
       case Some(v) if v > 0 => Right(v)
-      case Some(v)          => e.fail(s"attribute $key must be greater than 0, got $v")
+      case Some(v)          => e.fail(s"attribute $key must be greater than 0, got ${show(v)}")
     }
 
   private def element(node: Elem): Element = Element(node, doc.lineOf(node))
 
+  /** `f` applied to each item in order, stopping at the first error. */
   private def traverse[A, B](items: List[A])(f: A => Result[B]): Result[List[B]] =
-    items.foldRight[Result[List[B]]](Right(Nil))((item, rest) =>
-      for b <- f(item); bs <- rest yield b :: bs
-    )
+    items
+      .foldLeft[Result[List[B]]](Right(Nil))((done, item) =>
+        done.flatMap(bs => f(item).map(_ :: bs))
+      )
+      .map(_.reverse)
 
   private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
     item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
 
 private object SceneReader:
+  /** A number as a person would write it: `-1`, not `-1.0`. */
+  def show(d: Double): String =
+    if d == Math.rint(d) && Math.abs(d) < 1e15 then d.toLong.toString else d.toString
+
   /** A decimal number as the scene format allows it: `-1`, `0.25`, `2.5e-3`. */
   val Decimal = raw"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?".r

@@ -41,6 +41,11 @@ object Renderer:
     val frame = Frame(scene, config)
     Bitmap.stack((0 until config.rows).map(frame.row))
 
+  /** Where a pixel's n × n samples lie along each axis, from its top left corner in pixel units:
+    * (i + 0.5)/n for 0 ≤ i < n, so n = 1 is the pixel's centre (rendering.md, Antialiasing).
+    */
+  def sampleOffsets(n: Int): IndexedSeq[Double] = (0 until n).map(i => (i + 0.5) / n)
+
   /** The parts of a picture that every row shares, built once. */
   private final class Frame(scene: Scene, config: CameraConfig):
     private val projection = Projection(scene.camera, config)

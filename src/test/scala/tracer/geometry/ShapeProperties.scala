@@ -1,0 +1,85 @@
+package tracer.geometry
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Prop.forAll
+import org.scalacheck.{Gen, Prop}
+import tracer.math.Vec3
+import tracer.testkit.Generators.*
+
+/** Geometric properties of intersections with random shapes and rays (after pbrt's shapes_test). */
+class ShapeProperties extends ScalaCheckSuite:
+
+  private val sphere: Gen[Sphere] =
+    for c <- vec; r <- Gen.choose(0.1, 100.0) yield Sphere(c, r)
+
+  private val plane: Gen[Plane] = for n <- unitVec; d <- scalar yield Plane.at(n, d)
+
+  private val triangle: Gen[Triangle] =
+    Gen
+      .zip(vec, vec, vec)
+      .suchThat((a, b, c) => (b - a).cross(c - a).length > 1e-2)
+      .map(Triangle(_, _, _))
+
+  private val shape: Gen[Shape] = Gen.oneOf(sphere, plane, triangle)
+
+  /** A point on `shape`: on the surface of a sphere, a plane near the origin, inside a triangle. */
+  private def pointOn(shape: Shape): Gen[Vec3] = shape match
+    case s: Sphere   => unitVec.map(d => s.centre + d * s.radius)
+    case p: Plane    => vec.map(q => q - p.normal * (q.dot(p.normal) - p.distance))
+    case t: Triangle =>
+      for u <- Gen.choose(0.05, 0.85); v <- Gen.choose(0.05, 0.95 - u)
+      yield t.t0 + t.a * u + t.b * v
+
+  /** A shape, a point on it, and a ray from a random origin aimed at that point. */
+  private val aimed: Gen[(Shape, Vec3, Ray)] =
+    for
+      s <- shape
+      p <- pointOn(s)
+      o <- vec.suchThat(o => (p - o).length > 1)
+    yield (s, p, Ray(o, (p - o).normalised.get))
+
+  private def isOn(shape: Shape, p: Vec3): Boolean = shape match
+    case s: Sphere =>
+      Math.abs(p.distance(s.centre) - s.radius) <= 1e-9 * (s.radius + s.centre.length + 1e3)
+    case pl: Plane   => Math.abs(p.dot(pl.normal) - pl.distance) <= 1e-8 * (p.length + 1)
+    case t: Triangle => Math.abs(p.dot(t.normal) - t.distance) <= 1e-8 * (p.length + 1)
+
+  property("a ray aimed at a point of a shape hits it, at t > 0, on its surface"):
+    forAll(aimed) { (s, _, r) =>
+      Shape.intersect(s, r) match
+        case None    => Prop.falsified :| s"$r missed $s"
+        case Some(h) => Prop(h.t > 0 && isOn(s, h.point)) :| s"$h is not on $s"
+    }
+
+  property("the normal at a hit has unit length and faces the ray"):
+    forAll(aimed) { (s, _, r) =>
+      Shape
+        .intersect(s, r)
+        .forall(h => Math.abs(h.normal.length - 1) < 1e-9 && h.normal.dot(r.direction) <= 1e-9)
+    }
+
+  property("a sphere's outward normal points along p − c"):
+    forAll(sphere, unitVec) { (s, d) =>
+      val r = Ray(s.centre + d * (s.radius * 3), -d)
+      Shape.intersect(s, r).exists(h => h.normal.dot(d) > 1 - 1e-9)
+    }
+
+  property("a ray aimed away from a sphere it starts outside misses"):
+    forAll(sphere, unitVec) { (s, d) =>
+      Shape.distance(s, Ray(s.centre + d * (s.radius * 2), d)) == Double.PositiveInfinity
+    }
+
+  property("a ray leaving a hit point along the normal, ε off the surface, does not hit it again"):
+    forAll(aimed) { (s, _, r) =>
+      // From inside a sphere the normal points inwards, and the far side is rightly hit again.
+      val fromInside = s match
+        case sphere: Sphere => r.origin.distance(sphere.centre) < sphere.radius
+        case _              => false
+      fromInside || Shape.intersect(s, r).forall { h =>
+        val away = Ray(h.point + h.normal * (1e-4 * (1 + h.point.length)), h.normal)
+        Shape.distance(s, away) == Double.PositiveInfinity
+      }
+    }
+
+  property("distance is never NaN for finite inputs"):
+    forAll(shape, vec, unitVec)((s, o, d) => !Shape.distance(s, Ray(o, d)).isNaN)

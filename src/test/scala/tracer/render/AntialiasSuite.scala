@@ -1,0 +1,61 @@
+package tracer.render
+
+import tracer.geometry.Plane
+import tracer.image.Colour
+import tracer.math.Vec3
+import tracer.scene.*
+import tracer.testkit.Scenes.matte
+
+/** n × n samples a pixel (rendering.md, Antialiasing). */
+class AntialiasSuite extends munit.FunSuite:
+
+  test("sample offsets are (i + 0.5)/n: the centre for n = 1, a regular grid otherwise"):
+    assertEquals(Renderer.sampleOffsets(1), Vector(0.5))
+    assertEquals(Renderer.sampleOffsets(2), Vector(0.25, 0.75))
+    assertEquals(Renderer.sampleOffsets(4), Vector(0.125, 0.375, 0.625, 0.875))
+    for n <- 1 to 16 do
+      val offsets = Renderer.sampleOffsets(n)
+      assertEquals(offsets.length, n)
+      assert(offsets.forall(o => o > 0 && o < 1), offsets.toString)
+      offsets.zip(offsets.reverse).foreach((a, b) => assertEqualsDouble(a + b, 1.0, 1e-15))
+
+  // The camera one unit above a white floor y = 0, looking level: the horizon splits the image
+  // in two halves, sky (black background) above and floor below.
+  private val level = Camera(Vec3(0, 1, -5), Vec3(0, 1, 0))
+  private val floor = matte(Plane.at(Vec3.UnitY, 0), Colour.White)
+
+  test("one sample a pixel gives exactly the plain picture"):
+    val scene  = Scene(level, lights = List(Light(Vec3(1, 2, -4))), objects = List(floor))
+    val config = CameraConfig(1, 1, 0.75, 16, 12)
+    assertEquals(Renderer.render(scene, config.copy(samples = 1)), Renderer.render(scene, config))
+
+  test("a pixel straddling the horizon is the mean of what its samples see"):
+    val scene  = Scene(level, objects = List(floor))
+    val config = CameraConfig(1, 1, 1, 1, 1, mode = ShadingMode.Quick, samples = 4)
+    // In quick mode a floor sample is |rn · Rd| = |Rd.y|; a sky sample is black.
+    val projection = Projection(level, config)
+    val offsets    = Renderer.sampleOffsets(4)
+    val expected   =
+      (for j <- offsets; i <- offsets yield Math.max(0, -projection.ray(i, j).direction.y)).sum / 16
+    assert(expected > 0.05, expected.toString)
+    assertEquals(Renderer.render(scene, config).sample(0, 0, 0), Colour.quantise(expected, 255))
+
+  test("each sample is brought into range before the samples are averaged"):
+    // The two floor samples are over-bright red (about 9.6, 0, 0); each becomes (1, 0, 0) before the
+    // mean with two black sky samples: 0.5, so 128. Averaging first would give 255.
+    val light = Light(Vec3(0, 5, 0), Colour.grey(10))
+    val scene = Scene(
+      level,
+      lights = List(light),
+      objects = List(matte(Plane.at(Vec3.UnitY, 0), Colour(1, 0, 0)))
+    )
+    val b = Renderer.render(scene, CameraConfig(1, 1, 1, 1, 1, samples = 2))
+    assertEquals((0 until 3).map(b.sample(0, 0, _)), Vector(128, 0, 0))
+
+  test("antialiasing is deterministic across thread counts"):
+    val scene  = Scene(level, lights = List(Light(Vec3(1, 2, -4))), objects = List(floor))
+    val config = CameraConfig(1, 1, 0.75, 31, 17, samples = 3)
+    assertEquals(
+      Renderer.render(scene, config, threads = 1),
+      Renderer.render(scene, config, threads = 2)
+    )

@@ -1,0 +1,38 @@
+package tracer.render
+
+import tracer.image.Colour
+import tracer.geometry.{Plane, Sphere}
+import tracer.math.Vec3
+import tracer.scene.*
+import tracer.testkit.Scenes.{camera, matte}
+
+/** The picture depends on the scene and the configuration only, never on the thread count. */
+class DeterminismSuite extends munit.FunSuite:
+
+  private val scene = Scene(
+    camera,
+    background = Colour(0.1, 0.1, 0.3),
+    lights = List(Light(Vec3(-3, 4, -4)), Light(Vec3(3, 2, -5), Colour(0.3, 0.3, 0.5))),
+    objects = List(
+      matte(Plane.at(Vec3.UnitY, -1), Colour.grey(0.7), reflection = 0.4),
+      matte(Sphere(Vec3(-0.6, 0, 0.5), 1), Colour(0.9, 0.3, 0.2), reflection = 0.3),
+      matte(Sphere(Vec3(1, -0.4, -0.4), 0.6), Colour.grey(0.9), diffuse = 0.3, reflection = 0.7)
+    )
+  )
+  private val config = CameraConfig(1, 1, 0.75, 97, 61, samples = 2)
+
+  test("1, 2, 3 and 8 threads give the same bitmap as the sequential renderer"):
+    val expected = Renderer.renderSequential(scene, config)
+    for threads <- List(1, 2, 3, 8) do
+      assertEquals(Renderer.render(scene, config, threads), expected, s"$threads threads")
+
+  test("every row is reported once"):
+    val rows = java.util.concurrent.atomic.AtomicInteger()
+    Renderer.render(
+      scene,
+      config,
+      threads = 3,
+      onRow = () =>
+        rows.incrementAndGet(); ()
+    )
+    assertEquals(rows.get, config.rows)

@@ -1,0 +1,21 @@
+package tracer.testkit
+
+import tracer.geometry.Shape
+import tracer.image.Colour
+import tracer.math.Vec3
+import tracer.scene.*
+
+/** Small scenes for tests, built in code. */
+object Scenes:
+
+  /** A camera on −z looking at the origin with the default image plane. */
+  val camera: Camera = Camera(Vec3(0, 0, -5), Vec3.Zero)
+
+  /** A shape with a plain matte surface of `colour`. */
+  def matte(
+      shape: Shape,
+      colour: Colour = Colour.White,
+      diffuse: Double = 1,
+      reflection: Double = 0
+  ): SceneObject =
+    SceneObject(shape, Surface(diffuse, reflection, Pigment.Solid(colour)))
