@@ -1,0 +1,183 @@
+package tracer.cli
+
+import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
+import java.nio.charset.StandardCharsets.UTF_8
+import java.nio.file.{Files, Path}
+import tracer.image.{Bitmap, Colour, Ppm}
+import tracer.testkit.Images
+
+/** The `tracer` command run in-process: outputs, the sample pictures, and every kind of bad input. */
+class MainSuite extends munit.FunSuite with Images:
+
+  /** What one run did. */
+  final case class Run(status: Int, out: String, err: String)
+
+  private val dir = FunFixture[Path](
+    _ => Files.createTempDirectory("tracer-main"),
+    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+  )
+
+  private def run(cwd: Path, scene: String, args: String*): Run =
+    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
+    val status     = Main.run(
+      args,
+      ByteArrayInputStream(scene.getBytes(UTF_8)),
+      PrintStream(out, true),
+      PrintStream(err, true),
+      cwd
+    )
+    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+
+  private def resource(name: String): String =
+    String(getClass.getResourceAsStream(name).readAllBytes(), UTF_8)
+
+  private val simple =
+    """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+      |<light><location x="-3" y="3" z="-5"/></light>
+      |<sphere radius="1"><centre x="0" y="0" z="0"/><surface><colour r="1" g="0.5" b="0"/></surface></sphere>
+      |</scene>""".stripMargin
+
+  /** Asserts a failed run: the status, one `tracer: ` line on stderr, nothing on stdout. */
+  private def assertFailed(r: Run, status: Int, expected: String*)(using munit.Location): Unit =
+    assertEquals(r.status, status, r.err)
+    assertEquals(r.out, "")
+    assert(r.err.startsWith("tracer: ") && r.err.linesIterator.size == 1, s"stderr: '${r.err}'")
+    expected.foreach(e => assert(r.err.contains(e), s"'${r.err.trim}' does not mention '$e'"))
+
+  private def assertNoFilesBut(d: Path, names: String*)(using munit.Location): Unit =
+    val present = Files.list(d).toArray.toList.map(_.asInstanceOf[Path].getFileName.toString)
+    assertEquals(present.sorted, names.toList.sorted)
+
+  private val samples = List(
+    ("basics.xml", List("-x", "320"), "basics-320x240.png"),
+    ("basics.xml", List("-x", "320", "-q"), "basics-q-320x240.png"),
+    ("basics.xml", List("-x", "320", "-r", "0"), "basics-r0-320x240.png"),
+    ("textures.xml", List("-x", "320"), "textures-320x240.png")
+  )
+
+  for (scene, args, expected) <- samples do
+    dir.test(s"the sample ${args.mkString(" ")} < $scene gives $expected"): d =>
+      Files.write(
+        d.resolve("orientation.ppm"),
+        getClass.getResourceAsStream("/samples/orientation.ppm").readAllBytes()
+      )
+      val r = run(d, resource(s"/samples/$scene"), (args :+ "out.png")*)
+      assertEquals(r, Run(0, "", ""))
+      assertImageClose(
+        readImage(d.resolve("out.png")),
+        resourceImage(s"/samples/expected/$expected"),
+        expected
+      )
+
+  dir.test("-t prints 'Tracetime: N ms' and nothing else on stdout"): d =>
+    val r = run(d, simple, "-t", "-x", "40", "out.ppm")
+    assertEquals(r.status, 0)
+    assert(r.out.matches("Tracetime: \\d+ ms\n"), s"stdout: '${r.out}'")
+    assertEquals(r.err, "")
+
+  dir.test("without -t nothing is printed"): d =>
+    assertEquals(run(d, simple, "-x", "40", "out.ppm"), Run(0, "", ""))
+
+  dir.test("the output format follows the extension: PNG for .png, binary PPM otherwise"): d =>
+    for name <- List("a.png", "b.PNG", "c.ppm", "d") do
+      assertEquals(run(d, simple, "-x", "8", name).status, 0)
+    def magic(name: String) = Files.readAllBytes(d.resolve(name)).take(4).toList
+    assertEquals(magic("a.png"), List(0x89.toByte, 'P'.toByte, 'N'.toByte, 'G'.toByte))
+    assertEquals(magic("b.PNG"), magic("a.png"))
+    assertEquals(magic("c.ppm").take(2), List('P'.toByte, '6'.toByte))
+    assertEquals(
+      Files.readAllBytes(d.resolve("d")).toList,
+      Files.readAllBytes(d.resolve("c.ppm")).toList
+    )
+
+  dir.test("the picture has the resolved size: -x 64 with the default camera is 64×48"): d =>
+    run(d, simple, "-x", "64", "o.ppm")
+    val image = Ppm.read(Files.readAllBytes(d.resolve("o.ppm"))).toOption.get
+    assertEquals((image.width, image.height), (64, 48))
+
+  dir.test("-z, -w and -h override the scene's camera"): d =>
+    run(d, simple, "-x", "32", "-y", "24", "plain.ppm")
+    run(d, simple, "-x", "32", "-y", "24", "-z", "2", "zoomed.ppm")
+    run(d, simple, "-x", "32", "-y", "24", "-w", "2", "-h", "1.5", "wide.ppm")
+    val List(plain, zoomed, wide) = List("plain.ppm", "zoomed.ppm", "wide.ppm").map(n =>
+      Ppm.read(Files.readAllBytes(d.resolve(n))).toOption.get
+    )
+    // Doubling Z sees what doubling W and H at the same zoom would not: compare coverage of the sphere.
+    def lit(b: Bitmap) =
+      (for x <- 0 until 32; y <- 0 until 24 yield b.sample(x, y, 0) > 0).count(identity)
+    assert(
+      lit(zoomed) > lit(plain) && lit(wide) < lit(plain),
+      s"${lit(plain)} ${lit(zoomed)} ${lit(wide)}"
+    )
+
+  dir.test("every thread count writes the same bytes"): d =>
+    for p <- List(1, 2, 5) do
+      assertEquals(run(d, simple, "-p", p.toString, "-x", "50", "-a", "2", s"p$p.ppm").status, 0)
+    val bytes = List(1, 2, 5).map(p => Files.readAllBytes(d.resolve(s"p$p.ppm")).toList)
+    assert(bytes.forall(_ == bytes.head))
+
+  dir.test("a success replaces an existing file"): d =>
+    Files.writeString(d.resolve("out.ppm"), "old")
+    assertEquals(run(d, simple, "-x", "8", "out.ppm").status, 0)
+    assert(Files.readAllBytes(d.resolve("out.ppm")).startsWith("P6".getBytes))
+    assertNoFilesBut(d, "out.ppm")
+
+  dir.test("an invalid scene exits 1 naming the element and line, and writes nothing"): d =>
+    val bad = simple.replace("radius=\"1\"", "radius=\"-1\"")
+    assertFailed(run(d, bad, "out.png"), 1, "line 3", "<sphere>", "radius")
+    assertNoFilesBut(d)
+
+  dir.test("a failed run never destroys an existing file"): d =>
+    Files.writeString(d.resolve("out.png"), "precious")
+    assertFailed(run(d, "<scene/>", "out.png"), 1, "missing <camera>")
+    assertFailed(run(d, simple, "-x", "0", "out.png"), 2)
+    assertEquals(Files.readString(d.resolve("out.png")), "precious")
+    assertNoFilesBut(d, "out.png")
+
+  dir.test("malformed XML and a DOCTYPE are failures with status 1"): d =>
+    assertFailed(run(d, "<scene>", "o.png"), 1, "malformed XML")
+    assertFailed(run(d, "", "o.png"), 1, "malformed XML")
+    assertFailed(
+      run(d, "<!DOCTYPE scene [<!ENTITY a \"b\">]><scene>&a;</scene>", "o.png"),
+      1,
+      "DOCTYPE"
+    )
+    assertNoFilesBut(d)
+
+  dir.test("a missing or unreadable texture exits 1 naming the file"): d =>
+    val textured =
+      simple.replace("<colour r=\"1\" g=\"0.5\" b=\"0\"/>", "<texture file=\"maps/earth.ppm\"/>")
+    assertFailed(run(d, textured, "o.png"), 1, "maps/earth.ppm", "no such file")
+    Files.createDirectory(d.resolve("maps"))
+    Files.writeString(d.resolve("maps/earth.ppm"), "P3 2 2 255 1 2 3")
+    assertFailed(run(d, textured, "o.png"), 1, "maps/earth.ppm", "truncated")
+    assertNoFilesBut(d, "maps")
+
+  dir.test("textures are read relative to the working directory, as PPM or PNG"): d =>
+    val textured =
+      simple.replace("<colour r=\"1\" g=\"0.5\" b=\"0\"/>", "<texture file=\"tex.img\"/>")
+    Files.write(d.resolve("tex.img"), tracer.image.Png.encode(Bitmap.fill(4, 4, Colour(0, 1, 0))))
+    assertEquals(run(d, textured, "-x", "16", "-q", "o.ppm").status, 0)
+    val image = Ppm.read(Files.readAllBytes(d.resolve("o.ppm"))).toOption.get
+    assertEquals((image.sample(8, 6, 0), image.sample(8, 6, 2)), (0, 0))
+    assert(image.sample(8, 6, 1) > 200)
+
+  dir.test("an output in a missing directory exits 1 before rendering"): d =>
+    assertFailed(run(d, simple, "-t", "nowhere/out.png"), 1, "nowhere", "no such directory")
+
+  dir.test("an image too large for memory is a clear error, not an OutOfMemoryError"): d =>
+    assertFailed(run(d, simple, "-x", "100000", "-y", "100000", "o.png"), 1, "too large")
+    assertFailed(run(d, simple, "-x", "30000", "-y", "20000", "o.png"), 1, "too large for memory")
+    assertNoFilesBut(d)
+
+  dir.test("usage errors exit 2 and write nothing"): d =>
+    assertFailed(run(d, simple), 2, "OUTPUT")
+    assertFailed(run(d, simple, "-r", "-2", "o.png"), 2, "-r")
+    assertFailed(run(d, simple, "-a", "17", "o.png"), 2, "-a")
+    assertFailed(run(d, simple, "--frobnicate", "o.png"), 2, "frobnicate")
+    assertNoFilesBut(d)
+
+  dir.test("--help prints the usage on stdout and exits 0"): d =>
+    val r = run(d, "", "--help")
+    assertEquals((r.status, r.err), (0, ""))
+    assert(r.out.contains("tracer [options] OUTPUT") && r.out.contains("-r, --depth d"), r.out)
