@@ -1,0 +1,103 @@
+package tracer.cli
+
+import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
+import java.nio.file.{Files, Path}
+import scala.jdk.CollectionConverters.*
+import scala.xml.{Elem, XML}
+import tracer.image.Png
+import tracer.testkit.Images
+
+/** The gallery in `scenes/`: each scene renders as its committed reference picture, and together
+  * they use every element and attribute of the scene format.
+  *
+  * After a deliberate change to the pictures, regenerate the references with
+  * `./sbt -Dgolden.update=true "testOnly tracer.cli.GallerySuite"` and look at them before committing.
+  */
+class GallerySuite extends munit.FunSuite with Images:
+
+  private val scenes  = Path.of("scenes")
+  private val goldens = Path.of("src/test/resources/golden")
+  private val update  = sys.props.get("golden.update").contains("true")
+  private val gallery = Files
+    .list(scenes)
+    .iterator
+    .asScala
+    .map(_.getFileName.toString)
+    .filter(_.endsWith(".xml"))
+    .toList
+    .sorted
+
+  test("the gallery has scenes"):
+    assert(gallery.length >= 3, gallery.toString)
+
+  for name <- gallery do
+    test(s"scenes/$name renders as its reference picture (96 pixels wide, -a 2)"):
+      val output = Files.createTempFile("gallery", ".png")
+      try
+        val err    = ByteArrayOutputStream()
+        val scene  = ByteArrayInputStream(Files.readAllBytes(scenes.resolve(name)))
+        val status = Main.run(
+          List("-x", "96", "-a", "2", "-r", "8", output.toString),
+          scene,
+          PrintStream(ByteArrayOutputStream()),
+          PrintStream(err),
+          scenes.toAbsolutePath
+        )
+        assertEquals(status, 0, err.toString)
+        val reference = goldens.resolve(name.replace(".xml", ".png"))
+        if update then Files.write(reference, Png.encode(readImage(output)))
+        assertImageClose(readImage(output), readImage(reference), name.replace(".xml", ""))
+      finally Files.delete(output)
+
+  test("together the gallery scenes use every element and attribute of scene-format.md"):
+    val used = gallery
+      .flatMap(n => XML.loadFile(scenes.resolve(n).toFile).descendant_or_self)
+      .collect {
+        case e: Elem => (e.label :: e.attributes.asAttrMap.keys.map(k => s"${e.label}@$k").toList)
+      }
+      .flatten
+      .toSet
+    val format = Set(
+      "scene",
+      "camera",
+      "camera@zoom",
+      "camera@width",
+      "camera@height",
+      "location",
+      "lookat",
+      "up",
+      "background",
+      "light",
+      "colour",
+      "color",
+      "sphere",
+      "sphere@radius",
+      "centre",
+      "center",
+      "pole",
+      "equator",
+      "surface",
+      "surface@diffuse",
+      "surface@reflection",
+      "texture",
+      "texture@file",
+      "plane",
+      "plane@distance",
+      "normal",
+      "point",
+      "triangle",
+      "corner",
+      "origin",
+      "a",
+      "b"
+    )
+    assertEquals(format -- used, Set.empty[String])
+
+  test("the gallery's textures come in every format the tracer reads: P6, P3 and PNG"):
+    val kinds = Files
+      .list(scenes.resolve("textures"))
+      .iterator
+      .asScala
+      .map(p => String(Files.readAllBytes(p).take(4), "ISO-8859-1").take(2))
+      .toSet
+    assertEquals(kinds, Set("P6", "P3", "\u0089P"))
