@@ -32,7 +32,7 @@ lazy val root = project
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
     // The system tests run the real launcher, which needs the assembled jar.
     Test / test               := (Test / test).dependsOn(assembly).value,
-    console / initialCommands := "import tracer.*, tracer.math.*, tracer.image.*, " +
+    console / initialCommands := "import tracer.math.*, tracer.image.*, tracer.io.*, " +
       "tracer.geometry.*, tracer.scene.*, tracer.render.*",
     Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
   )

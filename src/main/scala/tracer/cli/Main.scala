@@ -3,8 +3,8 @@ package tracer.cli
 import java.io.{InputStream, PrintStream}
 import java.nio.file.Path
 import scala.util.control.NonFatal
-import tracer.image.{Bitmap, ImageFile}
-import tracer.io.{OutputFile, SceneXml, TextureFiles}
+import tracer.image.Bitmap
+import tracer.io.{Images, OutputFile, SceneXml, TextureFiles}
 import tracer.render.{CameraConfig, Renderer, ShadingMode}
 import tracer.scene.Scene
 
@@ -66,7 +66,7 @@ object Main:
       (image, millis) = timed(
         withProgress(err, config.rows)(Renderer.render(scene, config, threads, _))
       )
-      _ <- OutputFile.write(output)(ImageFile.write(image, ImageFile.formatFor(options.output), _))
+      _ <- Images.save(image, output)
     yield if options.timing then out.println(s"Tracetime: $millis ms")
 
   /** The camera configuration: the scene's camera with the command line's overrides (cli.md). */

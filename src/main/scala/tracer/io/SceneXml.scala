@@ -23,6 +23,20 @@ object SceneXml:
   def parse(bytes: Array[Byte], loadTexture: TextureLoader): Either[SceneError, Scene] =
     XmlDocument.parse(bytes).flatMap(doc => SceneReader(doc, loadTexture).scene)
 
+  /** Reads the scene file `path`, its textures resolved against `textureBase` (by default the
+    * working directory, as the command line does).
+    */
+  def load(
+      path: java.nio.file.Path,
+      textureBase: java.nio.file.Path = java.nio.file.Path.of("").toAbsolutePath
+  ): Either[String, Scene] =
+    val bytes =
+      try Right(java.nio.file.Files.readAllBytes(path))
+      catch case e: java.io.IOException => Left(s"cannot read $path: $e")
+    bytes.flatMap(b =>
+      parse(b, TextureFiles.loader(textureBase)).left.map(e => s"$path: ${e.describe}")
+    )
+
 /** One element of the document with its line, for messages. */
 private final case class Element(node: Elem, line: Option[Int]):
   def name: String = node.label
