@@ -4,20 +4,17 @@ import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.file.{Files, Path}
 import scala.jdk.CollectionConverters.*
 import scala.xml.{Elem, XML}
-import tracer.image.Png
 import tracer.testkit.Images
 
 /** The gallery in `scenes/`: each scene renders as its committed reference picture, and together
   * they use every element and attribute of the scene format.
   *
   * After a deliberate change to the pictures, regenerate the references with
-  * `./sbt -Dgolden.update=true "testOnly tracer.cli.GallerySuite"` and look at them before committing.
+  * `GOLDEN_UPDATE=true ./sbt "testOnly tracer.cli.GallerySuite"` and look at them before committing.
   */
 class GallerySuite extends munit.FunSuite with Images:
 
   private val scenes  = Path.of("scenes")
-  private val goldens = Path.of("src/test/resources/golden")
-  private val update  = sys.props.get("golden.update").contains("true")
   private val gallery = Files
     .list(scenes)
     .iterator
@@ -44,9 +41,7 @@ class GallerySuite extends munit.FunSuite with Images:
           scenes.toAbsolutePath
         )
         assertEquals(status, 0, err.toString)
-        val reference = goldens.resolve(name.replace(".xml", ".png"))
-        if update then Files.write(reference, Png.encode(readImage(output)))
-        assertImageClose(readImage(output), readImage(reference), name.replace(".xml", ""))
+        assertGolden(readImage(output), name.replace(".xml", ""))
       finally Files.delete(output)
 
   test("together the gallery scenes use every element and attribute of scene-format.md"):

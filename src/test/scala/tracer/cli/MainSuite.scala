@@ -69,6 +69,19 @@ class MainSuite extends munit.FunSuite with Images:
         expected
       )
 
+  dir.test("-a 1 writes exactly the bytes of a run without -a"): d =>
+    val scene = resource("/samples/basics.xml")
+    assertEquals(run(d, scene, "-x", "80", "plain.ppm").status, 0)
+    assertEquals(run(d, scene, "-x", "80", "-a", "1", "a1.ppm").status, 0)
+    assertEquals(
+      Files.readAllBytes(d.resolve("a1.ppm")).toList,
+      Files.readAllBytes(d.resolve("plain.ppm")).toList
+    )
+
+  dir.test("-a 3 renders the basics sample as its reference picture, smoother than -a 1"): d =>
+    assertEquals(run(d, resource("/samples/basics.xml"), "-x", "96", "-a", "3", "a3.png").status, 0)
+    assertGolden(readImage(d.resolve("a3.png")), "basics-a3")
+
   dir.test("-t prints 'Tracetime: N ms' and nothing else on stdout"): d =>
     val r = run(d, simple, "-t", "-x", "40", "out.ppm")
     assertEquals(r.status, 0)

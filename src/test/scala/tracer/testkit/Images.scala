@@ -18,6 +18,14 @@ trait Images:
     try ImageFile.decode(stream.readAllBytes()).fold(why => fail(s"$name: $why"), identity)
     finally stream.close()
 
+  /** Asserts that `actual` matches the committed reference picture `src/test/resources/golden/NAME.png`.
+    * With the environment variable `GOLDEN_UPDATE=true`, writes `actual` as the new reference first.
+    */
+  def assertGolden(actual: Bitmap, name: String)(using Location): Unit =
+    val reference = Path.of("src/test/resources/golden", s"$name.png")
+    if sys.env.get("GOLDEN_UPDATE").contains("true") then Files.write(reference, Png.encode(actual))
+    assertImageClose(actual, readImage(reference), name)
+
   /** Asserts that `actual` matches `expected` to within `tolerance` levels in every sample; on a
     * mismatch, writes the actual image to `target/golden/NAME-actual.png` for a person to look at.
     */
