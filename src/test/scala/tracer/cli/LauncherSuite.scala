@@ -93,3 +93,17 @@ class LauncherSuite extends munit.FunSuite with Images:
     val e = tracer(d, d.resolve("basics.xml"), "--help")
     assertEquals((e.status, e.err), (0, ""))
     assert(e.out.contains("Usage: tracer"), e.out)
+
+  work.test("on a terminal a long render shows a progress line on stderr, then erases it"): d =>
+    assume(
+      Files.isExecutable(Path.of("/usr/bin/script")),
+      "needs script(1) to give the run a terminal"
+    )
+    Files.copy(home.resolve("scenes/showcase.xml"), d.resolve("showcase.xml"))
+    Files.createSymbolicLink(d.resolve("textures"), home.resolve("scenes/textures"))
+    // script(1) runs the command on a pseudo-terminal and copies what it shows to its stdout.
+    val command = s"cd '$d' && '$launcher' -x 1200 -a 3 -p 1 o.png < showcase.xml"
+    val e = runIn(d, Path.of("/dev/null"), List("/usr/bin/script", "-qec", command, "/dev/null"))
+    assertEquals(e.status, 0, e.out + e.err)
+    assert(e.out.contains("\rtracer: rendering ") && e.out.contains(" rows)"), e.out)
+    assert(e.out.contains("\r\u001b[K"), "the line is erased at the end")
