@@ -48,3 +48,30 @@ addCommandAlias(
   "check",
   "; scalafmtCheckAll ; scalafmtSbtCheck ; Test/compile ; bench/compile ; test"
 )
+
+// `./sbt movie` (the course's `ant movie`): builds the tracer, writes the frames of the project's
+// animation (tracer.demo.Animation) and renders them with scripts/movie.sh into target/movie/.
+lazy val movie = taskKey[Seq[File]]("Renders the project's movie into target/movie/")
+
+movie := {
+  val jar    = (root / assembly).value
+  val base   = (ThisBuild / baseDirectory).value
+  val dir    = base / "target" / "movie"
+  val log    = streams.value.log
+  val frames = (root / Compile / fullClasspath).value.files
+  (root / Compile / runner).value.run("tracer.demo.Animation", frames, Seq(dir.toString), log).get
+  val options = sys.env.getOrElse("TRACER_OPTS", "-x 640 -a 2")
+  log.info(s"rendering the movie's frames with TRACER_OPTS='$options' (built $jar)")
+  Seq("tracer.mp4", "tracer.mpg").map { name =>
+    val script = Seq(
+      "bash",
+      "scripts/movie.sh",
+      (base / "tracer").toString,
+      (dir / "frames.txt").toString,
+      (dir / name).toString
+    )
+    val status = scala.sys.process.Process(script, base, "TRACER_OPTS" -> options).!
+    if (status != 0) sys.error(s"scripts/movie.sh failed with status $status")
+    dir / name
+  }
+}

@@ -1,0 +1,257 @@
+package tracer
+
+import java.nio.charset.StandardCharsets.UTF_8
+import java.nio.file.attribute.PosixFilePermissions
+import java.nio.file.{Files, Path}
+import java.util.concurrent.TimeUnit
+import scala.jdk.CollectionConverters.*
+
+/** The shell scripts, run as a user runs them: `scripts/movie.sh` with the real tracer and ffmpeg,
+  * and `scripts/extract-docs.sh` on a fixture and on the project itself.
+  */
+class ScriptsSuite extends munit.FunSuite:
+
+  private val home  = Path.of("").toAbsolutePath
+  private val movie = home.resolve("scripts/movie.sh")
+
+  /** What one run of a script did. */
+  final case class Exit(status: Int, out: String, err: String)
+
+  private def run(
+      command: Seq[String],
+      cwd: Path = home,
+      env: Map[String, String] = Map.empty
+  ): Exit =
+    val (out, err) = (Files.createTempFile("out", ".txt"), Files.createTempFile("err", ".txt"))
+    try
+      val builder = ProcessBuilder(command*)
+        .directory(cwd.toFile)
+        .redirectOutput(out.toFile)
+        .redirectError(err.toFile)
+        .redirectInput(ProcessBuilder.Redirect.from(java.io.File("/dev/null")))
+      builder.environment.putAll(env.asJava)
+      val process = builder.start()
+      assert(process.waitFor(300, TimeUnit.SECONDS), s"$command did not finish")
+      Exit(process.exitValue, Files.readString(out, UTF_8), Files.readString(err, UTF_8))
+    finally List(out, err).foreach(Files.delete)
+
+  private def executable(path: Path, text: String): Path =
+    Files.writeString(path, text)
+    Files.setPosixFilePermissions(path, PosixFilePermissions.fromString("rwxr-xr-x"))
+    path
+
+  /** A workspace whose path has spaces, with a tracer wrapper that logs every scene it renders. */
+  private val workspace = FunFixture[Path](
+    _ =>
+      val d = Files.createTempDirectory("movie test")
+      Files.createDirectories(d.resolve("my frames"))
+      Files.createDirectories(d.resolve("my movies"))
+      executable(
+        d.resolve("logging tracer"),
+        s"""#!/usr/bin/env bash
+           |echo "$$PWD" >> "${d.resolve("calls.log")}"
+           |exec "${home.resolve("tracer")}" "$$@"
+           |""".stripMargin
+      )
+      d
+    ,
+    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+  )
+
+  private def scene(colour: String) =
+    s"""<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+       |<light><location x="-3" y="3" z="-5"/></light>
+       |<sphere radius="1"><centre x="0" y="0" z="0"/><surface><colour $colour/></surface></sphere></scene>""".stripMargin
+
+  private def writeFrames(d: Path, scenes: Seq[String]): Path =
+    scenes.zipWithIndex.foreach((s, i) => Files.writeString(d.resolve(s"my frames/f$i.xml"), s))
+    val list = "# a comment, then a blank line\n\n" + scenes.indices
+      .map(i => s"f$i.xml")
+      .mkString("\n") + "\n"
+    Files.writeString(d.resolve("my frames/frames.txt"), list)
+
+  private def calls(d: Path): Int =
+    if Files.exists(d.resolve("calls.log")) then Files.readAllLines(d.resolve("calls.log")).size
+    else 0
+
+  private def probe(file: Path): (Int, Int, Int) =
+    val e = run(
+      List(
+        "ffprobe",
+        "-v",
+        "error",
+        "-count_frames",
+        "-select_streams",
+        "v:0",
+        "-show_entries",
+        "stream=width,height,nb_read_frames",
+        "-of",
+        "csv=p=0",
+        file.toString
+      )
+    )
+    assertEquals(e.status, 0, e.err)
+    val Array(w, h, n) = e.out.trim.split(",").map(_.toInt)
+    (w, h, n)
+
+  private def frameTimes(d: Path, name: String): Seq[Int] =
+    Files
+      .list(d.resolve(s"my movies/$name-frames"))
+      .iterator
+      .asScala
+      .filter(_.toString.endsWith(".time"))
+      .map(p => Files.readString(p).trim.toInt)
+      .toSeq
+
+  private val colours =
+    List("r=\"1\" g=\"0\" b=\"0\"", "r=\"0\" g=\"1\" b=\"0\"", "r=\"0\" g=\"0\" b=\"1\"")
+
+  workspace.test(
+    "a movie of tiny frames: total = the sum of the frames' times, every frame encoded, odd sizes padded"
+  ): d =>
+    writeFrames(d, colours.map(scene))
+    val output = d.resolve("my movies/tiny.mp4")
+    // Run from an unrelated directory, with a relative FRAMES path.
+    val e = run(
+      List(
+        movie.toString,
+        d.resolve("logging tracer").toString,
+        "my frames/frames.txt",
+        output.toString
+      ),
+      cwd = d,
+      env = Map("TRACER_OPTS" -> "-x 33 -y 25 -p 1")
+    )
+    assertEquals(e.status, 0, e.err)
+    val total = "Total tracetime: (\\d+) ms\n".r.findFirstMatchIn(e.out).map(_.group(1).toInt)
+    assertEquals(e.out.linesIterator.toList.length, 1, e.out)
+    assertEquals(total, Some(frameTimes(d, "tiny").sum))
+    assertEquals(frameTimes(d, "tiny").length, 3)
+    assertEquals(probe(output), (34, 26, 3))
+    // One progress line a frame; each frame rendered from its scene's directory.
+    assertEquals(e.err.linesIterator.count(_.startsWith("frame ")), 3, e.err)
+    assertEquals(
+      Files.readAllLines(d.resolve("calls.log")).asScala.toSet,
+      Set(d.resolve("my frames").toString)
+    )
+
+  workspace.test(".mpg gives MPEG-1 video"): d =>
+    val list   = writeFrames(d, colours.take(2).map(scene))
+    val output = d.resolve("my movies/course.mpg")
+    val e      = run(
+      List(movie.toString, d.resolve("logging tracer").toString, list.toString, output.toString),
+      env = Map("TRACER_OPTS" -> "-x 32")
+    )
+    assertEquals(e.status, 0, e.err)
+    val codec = run(
+      List(
+        "ffprobe",
+        "-v",
+        "error",
+        "-select_streams",
+        "v:0",
+        "-show_entries",
+        "stream=codec_name",
+        "-of",
+        "csv=p=0",
+        output.toString
+      )
+    )
+    assertEquals(codec.out.trim, "mpeg1video")
+
+  workspace.test("a failing frame stops the movie naming it; a rerun renders only what is missing"):
+    d =>
+      val list    = writeFrames(d, List(scene(colours(0)), "<scene>broken", scene(colours(2))))
+      val output  = d.resolve("my movies/resume.mp4")
+      val command =
+        List(movie.toString, d.resolve("logging tracer").toString, list.toString, output.toString)
+      val env    = Map("TRACER_OPTS" -> "-x 16")
+      val failed = run(command, env = env)
+      assertEquals(failed.status, 1)
+      assert(failed.err.contains("frame 2 failed") && failed.err.contains("f1.xml"), failed.err)
+      assert(!failed.out.contains("Total"), failed.out)
+      assert(!Files.exists(output))
+      assertEquals(calls(d), 2)
+      // Mend the scene: the rerun renders frames 2 and 3 only, and still totals all three.
+      Files.writeString(d.resolve("my frames/f1.xml"), scene(colours(1)))
+      val resumed = run(command, env = env)
+      assertEquals(resumed.status, 0, resumed.err)
+      assertEquals(calls(d), 4)
+      assert(resumed.err.contains("frame 1/3") && resumed.err.contains("done before"), resumed.err)
+      assertEquals(resumed.out, s"Total tracetime: ${frameTimes(d, "resume").sum} ms\n")
+      assertEquals(probe(output)._3, 3)
+      // A third run renders nothing at all.
+      assertEquals(run(command, env = env).status, 0)
+      assertEquals(calls(d), 4)
+
+  workspace.test("without ffmpeg the frames are rendered, then a message says how to install it"):
+    d =>
+      val list = writeFrames(d, colours.take(1).map(scene))
+      // A PATH with the tools the script and the tracer need, but no ffmpeg.
+      val bin = Files.createDirectories(d.resolve("bin"))
+      for tool <- List(
+          "bash",
+          "env",
+          "dirname",
+          "basename",
+          "mkdir",
+          "cat",
+          "sed",
+          "mv",
+          "rm",
+          "find",
+          "java",
+          "readlink"
+        )
+      do
+        val real = run(List("bash", "-c", s"command -v $tool")).out.trim
+        if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
+      val e = run(
+        List(
+          "bash",
+          movie.toString,
+          d.resolve("logging tracer").toString,
+          list.toString,
+          d.resolve("my movies/x.mp4").toString
+        ),
+        env = Map("PATH" -> bin.toString, "TRACER_OPTS" -> "-x 16")
+      )
+      assertEquals(e.status, 1, e.err)
+      assert(e.out.startsWith("Total tracetime: "), e.out)
+      assert(
+        e.err.contains("ffmpeg is not installed") && e.err.contains("apt-get install ffmpeg"),
+        e.err
+      )
+      assertEquals(frameTimes(d, "x").length, 1)
+
+  test("movie.sh refuses bad arguments with status 2"):
+    assertEquals(run(List(movie.toString)).status, 2)
+    assertEquals(run(List(movie.toString, "/no/such/tracer", "frames.txt")).status, 2)
+    val e = run(List(movie.toString, home.resolve("tracer").toString, "build.sbt", "movie.avi"))
+    assertEquals(e.status, 2)
+    assert(e.err.contains(".mpg") && e.err.contains(".mp4"), e.err)
+
+  test(
+    "extract-docs.sh lists the public, documented declarations of a fixture with their summaries"
+  ):
+    val e = run(List("bash", "scripts/extract-docs.sh", "src/test/resources/extract-docs"))
+    assertEquals(e.status, 0, e.err)
+    assertEquals(
+      e.out,
+      Files.readString(home.resolve("src/test/resources/extract-docs/expected.md"))
+    )
+
+  test("docs/api.md is what extract-docs.sh makes of the sources today"):
+    val e = run(List("bash", "scripts/extract-docs.sh"))
+    assertEquals(e.status, 0, e.err)
+    assert(
+      e.out.contains(
+        "`final case class Vec3(x: Double, y: Double, z: Double)` — An immutable vector"
+      ),
+      e.out.take(500)
+    )
+    assertEquals(
+      e.out,
+      Files.readString(home.resolve("docs/api.md")),
+      "run: scripts/extract-docs.sh > docs/api.md"
+    )
