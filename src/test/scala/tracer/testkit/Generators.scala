@@ -14,12 +14,12 @@ object Generators:
   val vec: Gen[Vec3] = for x <- coordinate; y <- coordinate; z <- coordinate yield Vec3(x, y, z)
 
   /** A vector at least 1e-3 long, so that it has a direction. */
-  val nonZeroVec: Gen[Vec3] = vec.suchThat(_.length > 1e-3)
+  val nonZeroVec: Gen[Vec3] = vec.retryUntil(_.length > 1e-3)
 
   /** A vector of length 1, uniformly over directions. */
   val unitVec: Gen[Vec3] =
     (for x <- Gen.choose(-1.0, 1.0); y <- Gen.choose(-1.0, 1.0); z <- Gen.choose(-1.0, 1.0)
-    yield Vec3(x, y, z)).suchThat(v => v.length > 0.1 && v.length <= 1).map(v => v / v.length)
+    yield Vec3(x, y, z)).retryUntil(v => v.length > 0.1 && v.length <= 1).map(v => v / v.length)
 
   /** A scale factor, sometimes negative. */
   val scalar: Gen[Double] = Gen.choose(-1e3, 1e3)
