@@ -49,14 +49,16 @@ object Renderer:
   /** The parts of a picture that every row shares, built once. */
   private final class Frame(scene: Scene, config: CameraConfig):
     private val projection = Projection(scene.camera, config)
-    private val shading    = Shading(World(scene), config.mode)
+    private val world      = World(scene)
     private val n          = config.samples
 
     /** Row `y` of the picture, as a bitmap one pixel high. */
-    def row(y: Int): Bitmap = Bitmap.tabulate(config.columns, 1)((x, _) => pixel(x, y))
+    def row(y: Int): Bitmap =
+      val shading = Shading(world, config.mode)
+      Bitmap.tabulate(config.columns, 1)((x, _) => pixel(shading, x, y))
 
     /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
-    private def pixel(x: Int, y: Int): Colour =
+    private def pixel(shading: Shading, x: Int, y: Int): Colour =
       val samples =
         for j <- 0 until n; i <- 0 until n
         yield shading

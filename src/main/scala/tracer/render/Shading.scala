@@ -4,12 +4,16 @@ import tracer.geometry.{Hit, Ray, Shape}
 import tracer.image.Colour
 import tracer.scene.Pigment
 
-/** The colour a ray brings back from the world (rendering.md, Colour of a hit). */
+/** The colour a ray brings back from the world (rendering.md, Colour of a hit).
+  *
+  * Not thread-safe: it keeps scratch space for its queries, so each render task makes its own.
+  */
 final class Shading(world: World, mode: ShadingMode):
+  private val stack = world.newStack()
 
   /** The colour seen along `ray`, allowing `depth` more reflections. */
   def colour(ray: Ray, depth: Int): Colour =
-    val i = world.nearest(ray)
+    val i = world.nearest(ray, stack)
     if i < 0 then world.background
     else
       val shape = world.shape(i)
@@ -29,7 +33,7 @@ final class Shading(world: World, mode: ShadingMode):
       val reach   = toLight.length
       // Equation 41; a light exactly at S0 shines straight along the normal.
       val sd = if reach > 0 then toLight / reach else hit.normal
-      if world.occluded(Ray(s0, sd), reach) then sum
+      if world.occluded(Ray(s0, sd), reach, stack) then sum
       else sum + colour * light.colour * surface.diffuse * Math.abs(hit.normal.dot(sd))
     }
 

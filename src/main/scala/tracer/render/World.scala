@@ -3,13 +3,15 @@ package tracer.render
 import tracer.geometry.{Ray, Shape}
 import tracer.scene.{Light, Scene, Surface}
 
-/** A scene compiled for tracing: its shapes, surfaces and lights in flat arrays.
-  *
-  * Built once per picture from the immutable [[tracer.scene.Scene]] and never changed after.
+/** A scene compiled for tracing: its shapes and surfaces in flat arrays, the bounded shapes in a
+  * [[Bvh]], the planes (unbounded) in a list of their own. Built once per picture from the
+  * immutable [[tracer.scene.Scene]] and never changed after.
   */
 final class World(scene: Scene):
   private val shapes: Array[Shape]     = scene.objects.map(_.shape).toArray
   private val surfaces: Array[Surface] = scene.objects.map(_.surface).toArray
+  private val planes: Array[Int] = shapes.indices.filterNot(i => Bvh.isBounded(shapes(i))).toArray
+  private val bvh                = Bvh(shapes.toIndexedSeq)
 
   /** The lights, in document order. */
   val lights: IndexedSeq[Light] = scene.lights.toIndexedSeq
@@ -23,25 +25,39 @@ final class World(scene: Scene):
   /** The surface of shape `i`. */
   def surface(i: Int): Surface = surfaces(i)
 
+  /** Scratch space for one thread's queries ([[nearest]], [[occluded]]). */
+  def newStack(): Array[Int] = new Array[Int](Bvh.StackSize)
+
   /** The index of the shape `ray` hits first (smallest t > 0; the first in document order on a
-    * tie), or −1 when it hits nothing.
+    * tie), or −1 when it hits nothing. `stack` comes from [[newStack]] and is not shared.
     */
-  def nearest(ray: Ray): Int =
-    // Perf: a while loop keeping the best index and distance; nothing is allocated per shape.
-    var best  = -1
+  def nearest(ray: Ray, stack: Array[Int]): Int =
+    // Perf: planes in a plain loop, then the hierarchy, pruned by the nearest plane.
+    var best  = Int.MaxValue
     var bestT = Double.PositiveInfinity
-    var i     = 0
-    while i < shapes.length do
-      val t = Shape.distance(shapes(i), ray)
+    var k     = 0
+    while k < planes.length do
+      val t = Shape.distance(shapes(planes(k)), ray)
       if t < bestT then
         bestT = t
-        best = i
-      i += 1
-    best
+        best = planes(k)
+      k += 1
+    val winner = bvh.nearest(ray, bestT, best, stack)
+    if winner == Int.MaxValue then -1 else winner
 
   /** True when some shape is hit by `ray` at a t with 0 < t < `limit` (a shadow test). */
-  def occluded(ray: Ray, limit: Double): Boolean =
-    // Perf: stops at the first blocker; order does not matter for a yes/no answer.
-    var i = 0
-    while i < shapes.length && !(Shape.distance(shapes(i), ray) < limit) do i += 1
-    i < shapes.length
+  def occluded(ray: Ray, limit: Double, stack: Array[Int]): Boolean =
+    var k = 0
+    while k < planes.length && !(Shape.distance(shapes(planes(k)), ray) < limit) do k += 1
+    k < planes.length || bvh.occluded(ray, limit, stack)
+
+  /** The index of the shape `ray` hits first, by testing every shape: the reference that
+    * [[nearest]] must agree with (tests and benchmarks).
+    */
+  def nearestByBruteForce(ray: Ray): Int =
+    shapes.indices
+      .foldLeft((-1, Double.PositiveInfinity)) { case ((best, bestT), i) =>
+        val t = Shape.distance(shapes(i), ray)
+        if t < bestT then (i, t) else (best, bestT)
+      }
+      ._1
