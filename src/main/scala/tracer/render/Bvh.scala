@@ -31,11 +31,16 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     else
       // Perf: an iterative walk with an explicit stack, nearer child first, pruned by the best
       // distance so far (RenderBench.mesh: 1700× faster than the flat loop on 20k triangles).
-      val (ox, oy, oz) = (ray.origin.x, ray.origin.y, ray.origin.z)
-      val (ix, iy, iz) = (1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z)
-      var best         = limitIndex
-      var bestT        = limit
-      var sp           = 0
+      // Perf: six separate vals, not tuples (a tuple of doubles is allocated and boxed).
+      val ox    = ray.origin.x
+      val oy    = ray.origin.y
+      val oz    = ray.origin.z
+      val ix    = 1 / ray.direction.x
+      val iy    = 1 / ray.direction.y
+      val iz    = 1 / ray.direction.z
+      var best  = limitIndex
+      var bestT = limit
+      var sp    = 0
       stack(sp) = 0
       sp += 1
       while sp > 0 do
@@ -74,10 +79,15 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     if order.isEmpty then false
     else
       // Perf: any hit will do, so no ordering and an early exit (shadow rays).
-      val (ox, oy, oz) = (ray.origin.x, ray.origin.y, ray.origin.z)
-      val (ix, iy, iz) = (1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z)
-      var hit          = false
-      var sp           = 0
+      // Perf: six separate vals, not tuples (a tuple of doubles is allocated and boxed).
+      val ox  = ray.origin.x
+      val oy  = ray.origin.y
+      val oz  = ray.origin.z
+      val ix  = 1 / ray.direction.x
+      val iy  = 1 / ray.direction.y
+      val iz  = 1 / ray.direction.z
+      var hit = false
+      var sp  = 0
       stack(sp) = 0
       sp += 1
       while sp > 0 && !hit do

@@ -51,6 +51,7 @@ object Renderer:
     private val projection = Projection(scene.camera, config)
     private val world      = World(scene)
     private val n          = config.samples
+    private val offsets    = Renderer.sampleOffsets(n).toArray
 
     /** Row `y` of the picture, as a bitmap one pixel high. */
     def row(y: Int): Bitmap =
@@ -59,12 +60,24 @@ object Renderer:
 
     /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
     private def pixel(shading: Shading, x: Int, y: Int): Colour =
-      val samples =
-        for j <- 0 until n; i <- 0 until n
-        yield shading
-          .colour(projection.ray(x + (i + 0.5) / n, y + (j + 0.5) / n), config.depth)
-          .inRange
-      samples.reduce(_ + _) / (n * n)
+      if n == 1 then shading.colour(projection.ray(x + 0.5, y + 0.5), config.depth)
+      else
+        // Perf: sum the samples' channels in locals rather than collecting n² colours.
+        var r = 0.0
+        var g = 0.0
+        var b = 0.0
+        var j = 0
+        while j < n do
+          var i = 0
+          while i < n do
+            val c =
+              shading.colour(projection.ray(x + offsets(i), y + offsets(j)), config.depth).inRange
+            r += c.r
+            g += c.g
+            b += c.b
+            i += 1
+          j += 1
+        Colour(r, g, b) / (n * n)
 
   /** Names the worker threads and lets the JVM exit without waiting for them. */
   private object WorkerThreads extends ThreadFactory:

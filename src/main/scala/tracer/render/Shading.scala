@@ -28,14 +28,25 @@ final class Shading(world: World, mode: ShadingMode):
     val colour  = pigment(i, hit)
     // Equation 40: start shadow rays just off the surface, on the side the ray came from.
     val s0 = hit.point + hit.normal * Shading.Epsilon
-    world.lights.foldLeft(Colour.Black) { (sum, light) =>
+    // Perf: a while loop summing channels in locals: no Colour or closure per light
+    // (RenderBench.few: see docs/performance.md, step 2).
+    var r = 0.0
+    var g = 0.0
+    var b = 0.0
+    var k = 0
+    while k < world.lights.length do
+      val light   = world.lights(k)
       val toLight = light.location - s0
       val reach   = toLight.length
       // Equation 41; a light exactly at S0 shines straight along the normal.
       val sd = if reach > 0 then toLight / reach else hit.normal
-      if world.occluded(Ray(s0, sd), reach, stack) then sum
-      else sum + colour * light.colour * surface.diffuse * Math.abs(hit.normal.dot(sd))
-    }
+      if !world.occluded(Ray(s0, sd), reach, stack) then
+        val cos = Math.abs(hit.normal.dot(sd))
+        r += colour.r * light.colour.r * surface.diffuse * cos
+        g += colour.g * light.colour.g * surface.diffuse * cos
+        b += colour.b * light.colour.b * surface.diffuse * cos
+      k += 1
+    Colour(r, g, b)
 
   /** reflection · colour(reflected ray, depth − 1), or black when the surface is no mirror or the
     * depth is spent (equations 43–44).

@@ -14,7 +14,7 @@ final class World(scene: Scene):
   private val bvh                = Bvh(shapes.toIndexedSeq)
 
   /** The lights, in document order. */
-  val lights: IndexedSeq[Light] = scene.lights.toIndexedSeq
+  val lights: IArray[Light] = IArray.from(scene.lights)
 
   /** The background colour. */
   val background = scene.background
