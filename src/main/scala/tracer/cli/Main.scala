@@ -4,7 +4,7 @@ import java.io.{InputStream, PrintStream}
 import java.nio.file.Path
 import scala.util.control.NonFatal
 import tracer.image.Bitmap
-import tracer.io.{Images, OutputFile, SceneXml, TextureFiles}
+import tracer.io.{Images, OutputFile, SceneSources, SceneXml}
 import tracer.render.{CameraConfig, Renderer, ShadingMode}
 import tracer.scene.Scene
 
@@ -57,7 +57,7 @@ object Main:
     for
       _     <- OutputFile.checkWritable(output)
       scene <- SceneXml
-        .parse(in.readAllBytes(), TextureFiles.loader(cwd))
+        .parse(in.readAllBytes(), SceneSources.files(cwd, w => err.println(s"tracer: warning: $w")))
         .left
         .map(e => s"scene: ${e.describe}")
       config = cameraConfig(scene, options)

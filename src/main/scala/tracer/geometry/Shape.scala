@@ -79,8 +79,16 @@ object Plane:
 /** A triangle with corners T0, T1 = T0 + a and T2 = T0 + b (course text, section 5.3).
   *
   * The derived values of equations 30–34 are computed once, here.
+  *
+  * @param textureCorners the texture coordinates of the three corners, for mesh triangles whose
+  *   OBJ file gives them; without them a texture maps T0, T1, T2 to (0, 0), (1, 0), (0, 1)
   */
-final case class Triangle(t0: Vec3, t1: Vec3, t2: Vec3) extends Shape:
+final case class Triangle(
+    t0: Vec3,
+    t1: Vec3,
+    t2: Vec3,
+    textureCorners: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)] = None
+) extends Shape:
   /** The leg a = T1 − T0. */
   val a: Vec3 = t1 - t0
 
@@ -150,14 +158,24 @@ object Shape:
 
   /** The texture coordinates of `point` on `shape` (rendering.md, Textures).
     *
-    * Sphere: equations 35–38 with the outward normal. Triangle: the (u, v) of equations 33–34.
+    * Sphere: equations 35–38 with the outward normal. Triangle: the (u, v) of equations 33–34, or
+    * for a mesh triangle its corners' coordinates interpolated at (u, v) and wrapped into [0, 1).
     * Plane: (0, 0), as planes take no texture.
     */
   def surfaceCoordinates(shape: Shape, point: Vec3): SurfaceCoordinates = shape match
     case s: Sphere    => sphereCoordinates(s, point)
     case tr: Triangle =>
       val (u, v) = triangleCoordinates(tr, point - tr.t0)
-      SurfaceCoordinates(u, v)
+      tr.textureCorners match
+        case None               => SurfaceCoordinates(u, v)
+        case Some((c0, c1, c2)) =>
+          // scene-format.md, mesh: interpolate the corners' coordinates, wrap each into [0, 1).
+          def wrap(x: Double) = x - Math.floor(x)
+          val w               = 1 - u - v
+          SurfaceCoordinates(
+            wrap(w * c0.u + u * c1.u + v * c2.u),
+            wrap(w * c0.v + u * c1.v + v * c2.v)
+          )
     case _: Plane => SurfaceCoordinates(0, 0)
 
   /** Equations 17–21: the nearer root for a ray from outside, the farther one from inside. */

@@ -13,29 +13,54 @@ object SceneXml:
   /** Loads the image a `<texture file="…">` names, or says why it cannot. */
   type TextureLoader = String => Either[String, Bitmap]
 
+  /** Loads the OBJ file a `<mesh file="…">` names, or says why it cannot. */
+  type MeshLoader = String => Either[String, ObjMesh]
+
   /** Parses a scene document. Every error names the element, its line and what is wrong;
-    * textures are read through `loadTexture`, each distinct file once.
+    * textures and meshes are read through `sources`, each distinct file once.
+    */
+  def parse(text: String, sources: SceneSources): Either[SceneError, Scene] =
+    XmlDocument.parse(text).flatMap(doc => SceneReader(doc, sources).scene)
+
+  /** Parses a scene document whose textures come from `loadTexture` (meshes from files relative
+    * to the working directory).
     */
   def parse(text: String, loadTexture: TextureLoader): Either[SceneError, Scene] =
-    XmlDocument.parse(text).flatMap(doc => SceneReader(doc, loadTexture).scene)
+    parse(text, SceneSources(loadTexture, MeshFiles.loader()))
 
   /** Parses a scene document from its bytes (the encoding comes from its XML declaration). */
-  def parse(bytes: Array[Byte], loadTexture: TextureLoader): Either[SceneError, Scene] =
-    XmlDocument.parse(bytes).flatMap(doc => SceneReader(doc, loadTexture).scene)
+  def parse(bytes: Array[Byte], sources: SceneSources): Either[SceneError, Scene] =
+    XmlDocument.parse(bytes).flatMap(doc => SceneReader(doc, sources).scene)
 
-  /** Reads the scene file `path`, its textures resolved against `textureBase` (by default the
-    * working directory, as the command line does).
+  /** Reads the scene file `path`, its textures and meshes resolved against `base` (by default
+    * the working directory, as the command line does).
     */
   def load(
       path: java.nio.file.Path,
-      textureBase: java.nio.file.Path = java.nio.file.Path.of("").toAbsolutePath
+      base: java.nio.file.Path = java.nio.file.Path.of("").toAbsolutePath
   ): Either[String, Scene] =
     val bytes =
       try Right(java.nio.file.Files.readAllBytes(path))
       catch case e: java.io.IOException => Left(s"cannot read $path: $e")
-    bytes.flatMap(b =>
-      parse(b, TextureFiles.loader(textureBase)).left.map(e => s"$path: ${e.describe}")
-    )
+    bytes.flatMap(b => parse(b, SceneSources.files(base)).left.map(e => s"$path: ${e.describe}"))
+
+/** Where a scene's textures and meshes come from, and where warnings about them go.
+  *
+  * @param texture loads a `<texture file="…">`
+  * @param mesh    loads a `<mesh file="…">`
+  * @param warn    receives warnings (skipped OBJ statements and faces), one line each
+  */
+final case class SceneSources(
+    texture: SceneXml.TextureLoader,
+    mesh: SceneXml.MeshLoader,
+    warn: String => Unit = _ => ()
+)
+
+/** Constructors for [[SceneSources]]. */
+object SceneSources:
+  /** Files relative to `base`, warnings to `warn`. */
+  def files(base: java.nio.file.Path, warn: String => Unit = _ => ()): SceneSources =
+    SceneSources(TextureFiles.loader(base), MeshFiles.loader(base), warn)
 
 /** One element of the document with its line, for messages. */
 private final case class Element(node: Elem, line: Option[Int]):
@@ -51,7 +76,7 @@ private final case class Element(node: Elem, line: Option[Int]):
   def attribute(key: String): Option[String] = node.attribute(key).map(_.text)
 
 /** Walks one parsed document and builds the scene, stopping at the first error. */
-private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureLoader):
+private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   import SceneReader.show
   private type Result[A] = Either[SceneError, A]
   private val textures = mutable.Map.empty[String, Result[Texture]]
@@ -66,10 +91,10 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
         _.fold(Right(Colour.Black))(colour(_, 1))
       )
       lights  <- traverse(children.filter(_.name == "light"))(light)
-      objects <- traverse(children.filter(c => ShapeNames(c.name)))(sceneObject)
+      objects <- traverse(children.filter(c => ShapeNames(c.name)))(sceneObjects).map(_.flatten)
     yield Scene(camera, background, lights, objects)
 
-  private val ShapeNames    = Set("sphere", "plane", "triangle")
+  private val ShapeNames    = Set("sphere", "plane", "triangle", "mesh")
   private val SceneChildren = Set("camera", "background", "light") ++ ShapeNames
 
   private def camera(e: Element): Result[Camera] =
@@ -98,10 +123,33 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
       )
     yield Light(location, colour)
 
-  private def sceneObject(e: Element): Result[SceneObject] = e.name match
-    case "sphere" => sphere(e)
-    case "plane"  => plane(e)
-    case _        => triangle(e)
+  private def sceneObjects(e: Element): Result[List[SceneObject]] = e.name match
+    case "sphere" => sphere(e).map(List(_))
+    case "plane"  => plane(e).map(List(_))
+    case "mesh"   => mesh(e)
+    case _        => triangle(e).map(List(_))
+
+  /** A `<mesh>`: the OBJ file's triangles scaled, rotated (x, then y, then z) and translated. */
+  private def mesh(e: Element): Result[List[SceneObject]] =
+    for
+      children  <- contents(e, Set("file", "scale"), Set("rotate", "translate", "surface"))
+      file      <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
+      scale     <- positive(e, "scale", 1.0)
+      rotate    <- optionalVector(e, children, Vec3.Zero, "rotate")
+      translate <- optionalVector(e, children, Vec3.Zero, "translate")
+      surface   <- surface(e, children, texturable = true)
+      obj       <- sources.mesh(file).left.map(why => e.error(s"cannot read mesh file: $why"))
+      _ <- if obj.triangles.nonEmpty then Right(()) else e.fail(s"mesh file $file has no faces")
+    yield
+      val place               = MeshTransform(scale, rotate, translate)
+      val placed              = obj.triangles.map(t => (place(t.a), place(t.b), place(t.c), t.uv))
+      val (proper, collinear) = placed.partition((a, b, c, _) => Triangle.isProper(a, b, c))
+      if obj.skippedKinds.nonEmpty then
+        sources.warn(s"$file: skipped unsupported statements: ${obj.skippedKinds.mkString(", ")}")
+      if collinear.nonEmpty then
+        val faces = if collinear.length == 1 then "face" else "faces"
+        sources.warn(s"$file: skipped ${collinear.length} $faces whose corners are collinear")
+      proper.map((a, b, c, uv) => SceneObject(Triangle(a, b, c, uv), surface)).toList
 
   private def sphere(e: Element): Result[SceneObject] =
     for
@@ -195,7 +243,8 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
       file    <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
       texture <- textures.getOrElseUpdate(
         file,
-        loadTexture(file)
+        sources
+          .texture(file)
           .map(Texture(_, file))
           .left
           .map(why => e.error(s"cannot read texture file '$file': $why"))
@@ -323,6 +372,20 @@ private final class SceneReader(doc: XmlDocument, loadTexture: SceneXml.TextureL
 
   private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
     item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
+
+/** A mesh's placement: p ↦ T(Rz(Ry(Rx(scale·p)))), angles in degrees, as POV-Ray's `rotate`. */
+private final case class MeshTransform(scale: Double, degrees: Vec3, translation: Vec3):
+  private val (sx, cx) = (Math.sin(Math.toRadians(degrees.x)), Math.cos(Math.toRadians(degrees.x)))
+  private val (sy, cy) = (Math.sin(Math.toRadians(degrees.y)), Math.cos(Math.toRadians(degrees.y)))
+  private val (sz, cz) = (Math.sin(Math.toRadians(degrees.z)), Math.cos(Math.toRadians(degrees.z)))
+
+  /** The placed point. */
+  def apply(p: Vec3): Vec3 =
+    val s  = p * scale
+    val rx = Vec3(s.x, s.y * cx - s.z * sx, s.y * sx + s.z * cx)
+    val ry = Vec3(rx.x * cy + rx.z * sy, rx.y, -rx.x * sy + rx.z * cy)
+    val rz = Vec3(ry.x * cz - ry.y * sz, ry.x * sz + ry.y * cz, ry.z)
+    rz + translation
 
 private object SceneReader:
   /** A number as a person would write it: `-1`, not `-1.0`. */

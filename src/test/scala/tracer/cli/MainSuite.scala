@@ -175,6 +175,30 @@ class MainSuite extends munit.FunSuite with Images:
     assertEquals((image.sample(8, 6, 0), image.sample(8, 6, 2)), (0, 0))
     assert(image.sample(8, 6, 1) > 200)
 
+  dir.test(
+    "a mesh's OBJ problems: exit 1 with one message for bad files, warnings on stderr otherwise"
+  ): d =>
+    val withMesh = simple.replace("</scene>", "<mesh file=\"m.obj\"/></scene>")
+    assertFailed(run(d, withMesh, "o.png"), 1, "m.obj", "no such file")
+    Files.writeString(d.resolve("m.obj"), "")
+    assertFailed(run(d, withMesh, "o.png"), 1, "m.obj has no faces")
+    Files.writeString(d.resolve("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+    assertFailed(run(d, withMesh, "o.png"), 1, "m.obj line 4", "vertex index 4 is out of range")
+    assertNoFilesBut(d, "m.obj")
+    Files.writeString(
+      d.resolve("m.obj"),
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nvp 1\nf 1 2 3\nf 1 2 4\n"
+    )
+    val r = run(d, withMesh, "-x", "8", "o.png")
+    assertEquals((r.status, r.out), (0, ""))
+    assertEquals(
+      r.err.linesIterator.toList,
+      List(
+        "tracer: warning: m.obj: skipped unsupported statements: vp",
+        "tracer: warning: m.obj: skipped 1 face whose corners are collinear"
+      )
+    )
+
   dir.test("an output in a missing directory exits 1 before rendering"): d =>
     assertFailed(run(d, simple, "-t", "nowhere/out.png"), 1, "nowhere", "no such directory")
 
