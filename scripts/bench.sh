@@ -29,7 +29,7 @@ if $povray && ! command -v povray >/dev/null; then echo "bench.sh: povray is not
 tracer="$home/tracer"
 "$tracer" --help >/dev/null # builds the jar if needed, outside the timings
 dir="$home/scenes/bench"
-if [ ! -f "$dir/mesh-80000.xml" ]; then
+if [ ! -f "$dir/mesh-80000.obj" ]; then
   echo "bench.sh: generating the benchmark scenes in $dir" >&2
   java -cp "$home/target/scala-3.8.3/tracer.jar" tracer.demo.BenchScenes "$dir"
 fi
@@ -52,7 +52,7 @@ best_of() {
   echo "$best ${best_trace:--}"
 }
 
-run_tracer() { "$tracer" -t -p "$threads" -x "$1" -y "$2" "$out/t.png" < "$dir/$3.xml"; }
+run_tracer() { (cd "$dir" && "$tracer" -t -p "$threads" -x "$1" -y "$2" "$out/t.png" < "$3.xml"); }
 run_povray() { povray +WT"$threads" -A +W"$1" +H"$2" +I"$dir/$3.pov" +O"$out/p.png" +FN File_Gamma=1.0 -D -V -GA 2>/dev/null; }
 
 echo "| scene | size | tracer wall ms | tracer render ms | primary Mrays/s |$($povray && echo ' POV-Ray wall ms | tracer / POV-Ray |')"

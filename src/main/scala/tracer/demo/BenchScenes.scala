@@ -22,13 +22,28 @@ object BenchScenes:
     case "spheres" => spheres
     case _         => mesh(Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt)
 
-  /** Writes `NAME.xml` and `NAME.pov` for every scene into `dir`. */
+  /** Writes `NAME.xml` and `NAME.pov` for every scene into `dir`; the meshes' XML names their
+    * triangles in `NAME.obj` through a `<mesh>` element, as a user would.
+    */
   def writeAll(dir: Path, depth: Int = 5): Unit =
     Files.createDirectories(dir)
     names.foreach { name =>
       val s = scene(name)
-      Files.writeString(dir.resolve(s"$name.xml"), SceneWriter.write(s))
       Files.writeString(dir.resolve(s"$name.pov"), PovRay.write(s, depth))
+      if name.startsWith("mesh-") then
+        val n = Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt
+        Files.writeString(
+          dir.resolve(s"$name.obj"),
+          Models.obj(grid(n), s"$name: a terrain of ${2 * n * n} triangles")
+        )
+        val withoutMesh = SceneWriter.write(s.copy(objects = s.objects.take(1)))
+        val mesh        =
+          s"""  <mesh file="$name.obj"><surface diffuse="0.9" reflection="0.1"><colour r="0.75" g="0.6" b="0.35"/></surface></mesh>\n"""
+        Files.writeString(
+          dir.resolve(s"$name.xml"),
+          withoutMesh.replace("</scene>", mesh + "</scene>")
+        )
+      else Files.writeString(dir.resolve(s"$name.xml"), SceneWriter.write(s))
     }
 
   /** Writes the scenes into the directory named by the first argument (default `scenes/bench`). */
@@ -86,17 +101,30 @@ object BenchScenes:
 
   /** (c) A rolling terrain of 2·n² triangles floating over a mirror floor. */
   def mesh(n: Int): Scene =
+    val model     = grid(n)
+    val surface   = matte(Colour(0.75, 0.6, 0.35), 0.1)
+    val triangles = model.faces.map(f =>
+      SceneObject(
+        Triangle(model.vertices(f(0) - 1), model.vertices(f(1) - 1), model.vertices(f(2) - 1)),
+        surface
+      )
+    )
+    Scene(camera, Colour(0.1, 0.1, 0.2), lights, mirrorFloor +: triangles)
+
+  /** The terrain of [[mesh]] as a model: an (n + 1)² grid of vertices, two triangles a cell. */
+  def grid(n: Int): Models.Model =
     def height(x: Double, z: Double) =
       0.8 + 0.35 * Math.sin(1.7 * x) * Math.cos(1.3 * z) + 0.15 * Math.sin(4.1 * x + 2.3 * z)
-    def vertex(i: Int, j: Int) =
+    val vertices = (for i <- 0 to n; j <- 0 to n yield
       val (x, z) = (-3 + 6.0 * i / n, 6.0 * j / n - 1)
       Vec3(x, height(x, z), z)
-    val surface   = matte(Colour(0.75, 0.6, 0.35), 0.1)
-    val triangles = for
+    ).toVector
+    def at(i: Int, j: Int) = i * (n + 1) + j + 1
+    val faces              = (for
       i <- 0 until n; j <- 0 until n;
-      t <- List(
-        Triangle(vertex(i, j), vertex(i + 1, j), vertex(i, j + 1)),
-        Triangle(vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1))
+      f <- Seq(
+        Seq(at(i, j), at(i + 1, j), at(i, j + 1)),
+        Seq(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1))
       )
-    yield SceneObject(t, surface)
-    Scene(camera, Colour(0.1, 0.1, 0.2), lights, mirrorFloor +: triangles)
+    yield f).toVector
+    Models.Model(vertices, Vector.empty, faces)
