@@ -31,10 +31,23 @@ done | awk -v src="$src" '
     return i ? substr(text, 1, i) : text "."
   }
 
+  # The text before the first " =" outside brackets: a default argument is not a body.
+  function before_body(s,   i, c, depth) {
+    depth = 0
+    for (i = 1; i <= length(s); i++) {
+      c = substr(s, i, 1)
+      if (c == "(" || c == "[") depth++
+      else if (c == ")" || c == "]") depth--
+      else if (c == "=" && depth == 0 && substr(s, i - 1, 1) == " " && (i == length(s) || substr(s, i + 1, 1) == " "))
+        return substr(s, 1, i - 2)
+    }
+    return s
+  }
+
   # A declaration shortened to its signature: no "= body", no trailing ":" or "{", no extends.
   function signature(line,   s) {
-    s = trim(line)
-    sub(/[ \t]+=([ \t].*)?$/, "", s); sub(/:[ \t]*$/, "", s); sub(/[ \t]*\{[ \t]*$/, "", s)
+    s = before_body(trim(line))
+    sub(/:[ \t]*$/, "", s); sub(/[ \t]*\{[ \t]*$/, "", s)
     sub(/[ \t]+(extends|derives)[ \t].*$/, "", s)
     sub(/\($/, "(…)", s)
     gsub(/`/, "", s)

@@ -14,7 +14,10 @@
 # scene. When every frame is rendered the script prints "Total tracetime: N ms" (the sum of every
 # frame's figure) on stdout, then encodes. Progress, one line a frame, goes to stderr.
 #
-# Environment: TRACER_OPTS (extra tracer options, e.g. "-x 640 -a 2"), MOVIE_FPS (default 25).
+# Environment: TRACER_OPTS (extra tracer options, e.g. "-x 640 -a 2"), MOVIE_FPS (default 25),
+# MOVIE_JOBS (frames rendered at once on this machine, default 1) and MOVIE_HOSTS (a GNU parallel
+# sshlogin file: render on those machines too, which must see TRACER, the scenes and the frame
+# directory at the same paths). Either of the last two renders through GNU parallel.
 # Exit status: 0 success, 1 a frame or the encoding failed, 2 a usage error.
 set -uo pipefail
 
@@ -35,6 +38,14 @@ case "$output" in
   *) die "OUTPUT '$output' must end in .mpg (MPEG-1) or .mp4 (H.264)" 2 ;;
 esac
 case "$fps" in '' | *[!0-9]* | 0) die "MOVIE_FPS must be a positive whole number, got '$fps'" 2 ;; esac
+jobs=${MOVIE_JOBS:-1}
+hosts=${MOVIE_HOSTS:-}
+case "$jobs" in '' | *[!0-9]* | 0) die "MOVIE_JOBS must be a positive whole number, got '$jobs'" 2 ;; esac
+if [ -n "$hosts" ] && [ ! -r "$hosts" ]; then die "MOVIE_HOSTS '$hosts' is not a readable sshlogin file" 2; fi
+if { [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; } && ! command -v parallel >/dev/null 2>&1; then
+  die "MOVIE_JOBS and MOVIE_HOSTS need GNU parallel: install it (Debian/Ubuntu: sudo apt-get install parallel; macOS: brew install parallel)"
+fi
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
 absolute() { case "$1" in /*) printf '%s\n' "$1" ;; *) printf '%s/%s\n' "$PWD" "$1" ;; esac; }
 tracer=$(absolute "$tracer")
@@ -56,28 +67,43 @@ done < "$frames_file"
 count=${#scenes[@]}
 [ "$count" -gt 0 ] || die "FRAMES '$frames_file' names no scene files"
 
-# Render each frame unless it is already there and newer than its scene.
-total=0
+# The frames still to render: those missing, without their time, or older than their scene.
+todo=()
 for i in "${!scenes[@]}"; do
   n=$((i + 1))
   scene=${scenes[$i]}
   frame=$(printf '%s/frame-%06d.png' "$frames_dir" "$n")
-  time_file="${frame%.png}.time"
-  [ -f "$scene" ] || die "frame $n: scene file '$scene' does not exist"
-  if [ -f "$frame" ] && [ -f "$time_file" ] && [ ! "$scene" -nt "$frame" ]; then
-    ms=$(cat "$time_file")
-    echo "frame $n/$count: $scene (done before, $ms ms)" >&2
+  if [ -f "$frame" ] && [ -f "${frame%.png}.time" ] && [ ! "$scene" -nt "$frame" ]; then
+    echo "frame $n/$count: $scene (done before, $(cat "${frame%.png}.time") ms)" >&2
   else
-    # shellcheck disable=SC2086 # TRACER_OPTS is a list of options: split it into words.
-    if ! result=$(cd "$(dirname "$scene")" && "$tracer" -t ${TRACER_OPTS:-} "$frame" < "$scene"); then
-      die "frame $n failed: $scene"
-    fi
-    ms=$(printf '%s\n' "$result" | sed -n 's/^Tracetime: \([0-9][0-9]*\) ms$/\1/p')
-    [ -n "$ms" ] || die "frame $n: the tracer printed no 'Tracetime: N ms' for $scene"
-    printf '%s\n' "$ms" > "$time_file.partial" && mv "$time_file.partial" "$time_file" ||
-      die "frame $n: cannot write '$time_file'"
-    echo "frame $n/$count: $scene ($ms ms)" >&2
+    todo+=("$n"$'\t'"$scene"$'\t'"$frame")
   fi
+done
+
+render_frame="$here/render-frame.sh"
+export TRACER_OPTS="${TRACER_OPTS:-}"
+if [ ${#todo[@]} -gt 0 ]; then
+  if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then
+    # GNU parallel spreads the frames over cores and ssh hosts; a failing frame stops new ones
+    # from starting, and those in flight finish. On hosts, a failed frame is tried again
+    # (elsewhere, if another host is free) before the movie is given up.
+    options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
+    if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
+    printf '%s\n' "${todo[@]}" | parallel "${options[@]}" -q "$render_frame" "$tracer" {2} {3} {1} "$count" ||
+      die "the movie stopped because a frame failed; run again to render what is missing"
+  else
+    for job in "${todo[@]}"; do
+      IFS=$'\t' read -r n scene frame <<< "$job"
+      "$render_frame" "$tracer" "$scene" "$frame" "$n" "$count" || exit 1
+    done
+  fi
+fi
+
+# The total: every frame's figure, wherever and whenever it was rendered.
+total=0
+for i in "${!scenes[@]}"; do
+  time_file=$(printf '%s/frame-%06d.time' "$frames_dir" "$((i + 1))")
+  ms=$(cat "$time_file" 2>/dev/null) || die "frame $((i + 1)) has no time: $time_file"
   total=$((total + ms))
 done
 

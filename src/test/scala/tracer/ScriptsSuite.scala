@@ -1,110 +1,13 @@
 package tracer
 
-import java.nio.charset.StandardCharsets.UTF_8
-import java.nio.file.attribute.PosixFilePermissions
 import java.nio.file.{Files, Path}
-import java.util.concurrent.TimeUnit
 import scala.jdk.CollectionConverters.*
+import tracer.testkit.MovieWorkspace
 
 /** The shell scripts, run as a user runs them: `scripts/movie.sh` with the real tracer and ffmpeg,
   * and `scripts/extract-docs.sh` on a fixture and on the project itself.
   */
-class ScriptsSuite extends munit.FunSuite:
-
-  private val home  = Path.of("").toAbsolutePath
-  private val movie = home.resolve("scripts/movie.sh")
-
-  /** What one run of a script did. */
-  final case class Exit(status: Int, out: String, err: String)
-
-  private def run(
-      command: Seq[String],
-      cwd: Path = home,
-      env: Map[String, String] = Map.empty
-  ): Exit =
-    val (out, err) = (Files.createTempFile("out", ".txt"), Files.createTempFile("err", ".txt"))
-    try
-      val builder = ProcessBuilder(command*)
-        .directory(cwd.toFile)
-        .redirectOutput(out.toFile)
-        .redirectError(err.toFile)
-        .redirectInput(ProcessBuilder.Redirect.from(java.io.File("/dev/null")))
-      builder.environment.putAll(env.asJava)
-      val process = builder.start()
-      assert(process.waitFor(300, TimeUnit.SECONDS), s"$command did not finish")
-      Exit(process.exitValue, Files.readString(out, UTF_8), Files.readString(err, UTF_8))
-    finally List(out, err).foreach(Files.delete)
-
-  private def executable(path: Path, text: String): Path =
-    Files.writeString(path, text)
-    Files.setPosixFilePermissions(path, PosixFilePermissions.fromString("rwxr-xr-x"))
-    path
-
-  /** A workspace whose path has spaces, with a tracer wrapper that logs every scene it renders. */
-  private val workspace = FunFixture[Path](
-    _ =>
-      val d = Files.createTempDirectory("movie test")
-      Files.createDirectories(d.resolve("my frames"))
-      Files.createDirectories(d.resolve("my movies"))
-      executable(
-        d.resolve("logging tracer"),
-        s"""#!/usr/bin/env bash
-           |echo "$$PWD" >> "${d.resolve("calls.log")}"
-           |exec "${home.resolve("tracer")}" "$$@"
-           |""".stripMargin
-      )
-      d
-    ,
-    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
-  )
-
-  private def scene(colour: String) =
-    s"""<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
-       |<light><location x="-3" y="3" z="-5"/></light>
-       |<sphere radius="1"><centre x="0" y="0" z="0"/><surface><colour $colour/></surface></sphere></scene>""".stripMargin
-
-  private def writeFrames(d: Path, scenes: Seq[String]): Path =
-    scenes.zipWithIndex.foreach((s, i) => Files.writeString(d.resolve(s"my frames/f$i.xml"), s))
-    val list = "# a comment, then a blank line\n\n" + scenes.indices
-      .map(i => s"f$i.xml")
-      .mkString("\n") + "\n"
-    Files.writeString(d.resolve("my frames/frames.txt"), list)
-
-  private def calls(d: Path): Int =
-    if Files.exists(d.resolve("calls.log")) then Files.readAllLines(d.resolve("calls.log")).size
-    else 0
-
-  private def probe(file: Path): (Int, Int, Int) =
-    val e = run(
-      List(
-        "ffprobe",
-        "-v",
-        "error",
-        "-count_frames",
-        "-select_streams",
-        "v:0",
-        "-show_entries",
-        "stream=width,height,nb_read_frames",
-        "-of",
-        "csv=p=0",
-        file.toString
-      )
-    )
-    assertEquals(e.status, 0, e.err)
-    val Array(w, h, n) = e.out.trim.split(",").map(_.toInt)
-    (w, h, n)
-
-  private def frameTimes(d: Path, name: String): Seq[Int] =
-    Files
-      .list(d.resolve(s"my movies/$name-frames"))
-      .iterator
-      .asScala
-      .filter(_.toString.endsWith(".time"))
-      .map(p => Files.readString(p).trim.toInt)
-      .toSeq
-
-  private val colours =
-    List("r=\"1\" g=\"0\" b=\"0\"", "r=\"0\" g=\"1\" b=\"0\"", "r=\"0\" g=\"0\" b=\"1\"")
+class ScriptsSuite extends MovieWorkspace:
 
   workspace.test(
     "a movie of tiny frames: total = the sum of the frames' times, every frame encoded, odd sizes padded"

@@ -1,0 +1,108 @@
+package tracer.testkit
+
+import java.nio.charset.StandardCharsets.UTF_8
+import java.nio.file.attribute.PosixFilePermissions
+import java.nio.file.{Files, Path}
+import java.util.concurrent.TimeUnit
+import scala.jdk.CollectionConverters.*
+
+/** Running scripts as processes, and a movie workspace: a directory whose path has spaces, with a
+  * "logging tracer" that records where (and whether over ssh) each frame was rendered, then runs
+  * the real `tracer`.
+  */
+trait MovieWorkspace extends munit.FunSuite:
+
+  protected val home  = Path.of("").toAbsolutePath
+  protected val movie = home.resolve("scripts/movie.sh")
+
+  /** What one run of a script did. */
+  final case class Exit(status: Int, out: String, err: String)
+
+  protected def run(
+      command: Seq[String],
+      cwd: Path = home,
+      env: Map[String, String] = Map.empty
+  ): Exit =
+    val (out, err) = (Files.createTempFile("out", ".txt"), Files.createTempFile("err", ".txt"))
+    try
+      val builder = ProcessBuilder(command*)
+        .directory(cwd.toFile)
+        .redirectOutput(out.toFile)
+        .redirectError(err.toFile)
+        .redirectInput(ProcessBuilder.Redirect.from(java.io.File("/dev/null")))
+      builder.environment.putAll(env.asJava)
+      val process = builder.start()
+      assert(process.waitFor(300, TimeUnit.SECONDS), s"$command did not finish")
+      Exit(process.exitValue, Files.readString(out, UTF_8), Files.readString(err, UTF_8))
+    finally List(out, err).foreach(Files.delete)
+
+  protected def executable(path: Path, text: String): Path =
+    Files.writeString(path, text)
+    Files.setPosixFilePermissions(path, PosixFilePermissions.fromString("rwxr-xr-x"))
+    path
+
+  /** A workspace whose path has spaces, with a tracer wrapper that logs every scene it renders. */
+  protected val workspace = FunFixture[Path](
+    _ =>
+      val d = Files.createTempDirectory("movie test")
+      Files.createDirectories(d.resolve("my frames"))
+      Files.createDirectories(d.resolve("my movies"))
+      executable(
+        d.resolve("logging tracer"),
+        s"""#!/usr/bin/env bash
+           |echo "$${SSH_CONNECTION:+ssh:}$$PWD" >> "${d.resolve("calls.log")}"
+           |exec "${home.resolve("tracer")}" "$$@"
+           |""".stripMargin
+      )
+      d
+    ,
+    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+  )
+
+  protected def scene(colour: String) =
+    s"""<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+       |<light><location x="-3" y="3" z="-5"/></light>
+       |<sphere radius="1"><centre x="0" y="0" z="0"/><surface><colour $colour/></surface></sphere></scene>""".stripMargin
+
+  protected def writeFrames(d: Path, scenes: Seq[String]): Path =
+    scenes.zipWithIndex.foreach((s, i) => Files.writeString(d.resolve(s"my frames/f$i.xml"), s))
+    val list = "# a comment, then a blank line\n\n" + scenes.indices
+      .map(i => s"f$i.xml")
+      .mkString("\n") + "\n"
+    Files.writeString(d.resolve("my frames/frames.txt"), list)
+
+  protected def calls(d: Path): Int =
+    if Files.exists(d.resolve("calls.log")) then Files.readAllLines(d.resolve("calls.log")).size
+    else 0
+
+  protected def probe(file: Path): (Int, Int, Int) =
+    val e = run(
+      List(
+        "ffprobe",
+        "-v",
+        "error",
+        "-count_frames",
+        "-select_streams",
+        "v:0",
+        "-show_entries",
+        "stream=width,height,nb_read_frames",
+        "-of",
+        "csv=p=0",
+        file.toString
+      )
+    )
+    assertEquals(e.status, 0, e.err)
+    val Array(w, h, n) = e.out.trim.split(",").map(_.toInt)
+    (w, h, n)
+
+  protected def frameTimes(d: Path, name: String): Seq[Int] =
+    Files
+      .list(d.resolve(s"my movies/$name-frames"))
+      .iterator
+      .asScala
+      .filter(_.toString.endsWith(".time"))
+      .map(p => Files.readString(p).trim.toInt)
+      .toSeq
+
+  protected val colours =
+    List("r=\"1\" g=\"0\" b=\"0\"", "r=\"0\" g=\"1\" b=\"0\"", "r=\"0\" g=\"0\" b=\"1\"")
