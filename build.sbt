@@ -43,10 +43,10 @@ lazy val bench = project
   .enablePlugins(JmhPlugin)
   .settings(name := "tracer-bench", publish / skip := true)
 
-// The one command that checks everything: formatting, then every test.
+// The one command that checks everything: formatting, compilation, Scaladoc, then every test.
 addCommandAlias(
   "check",
-  "; scalafmtCheckAll ; scalafmtSbtCheck ; Test/compile ; bench/compile ; test"
+  "; scalafmtCheckAll ; scalafmtSbtCheck ; Test/compile ; bench/compile ; doc ; test"
 )
 
 // `./sbt movie` (the course's `ant movie`): builds the tracer, writes the frames of the project's
