@@ -71,10 +71,8 @@ class FarmSuite extends MovieWorkspace:
   workspace.test("MOVIE_JOBS without GNU parallel is a clear message before anything is rendered"):
     d =>
       writeFrames(d, shades.take(1).map(scene))
-      val bin = Files.createDirectories(d.resolve("bin"))
-      for tool <- List("bash", "env", "dirname", "basename", "mkdir", "cat", "sed") do
-        val real = run(List("bash", "-c", s"command -v $tool")).out.trim
-        if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
+      val bin =
+        pathWith(d.resolve("bin"), "bash", "env", "dirname", "basename", "mkdir", "cat", "sed")
       val e = run(
         List(
           "bash",

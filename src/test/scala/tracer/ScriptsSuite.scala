@@ -1,6 +1,6 @@
 package tracer
 
-import java.nio.file.{Files, Path}
+import java.nio.file.Files
 import scala.jdk.CollectionConverters.*
 import tracer.testkit.MovieWorkspace
 
@@ -91,24 +91,21 @@ class ScriptsSuite extends MovieWorkspace:
     d =>
       val list = writeFrames(d, colours.take(1).map(scene))
       // A PATH with the tools the script and the tracer need, but no ffmpeg.
-      val bin = Files.createDirectories(d.resolve("bin"))
-      for tool <- List(
-          "bash",
-          "env",
-          "dirname",
-          "basename",
-          "mkdir",
-          "cat",
-          "sed",
-          "mv",
-          "rm",
-          "find",
-          "java",
-          "readlink"
-        )
-      do
-        val real = run(List("bash", "-c", s"command -v $tool")).out.trim
-        if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
+      val bin = pathWith(
+        d.resolve("bin"),
+        "bash",
+        "env",
+        "dirname",
+        "basename",
+        "mkdir",
+        "cat",
+        "sed",
+        "mv",
+        "rm",
+        "find",
+        "java",
+        "readlink"
+      )
       val e = run(
         List(
           "bash",

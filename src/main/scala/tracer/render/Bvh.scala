@@ -29,82 +29,89 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     if order.isEmpty then limitIndex
     else
       // Perf: an iterative walk with an explicit stack, nearer child first, pruned by the best
-      // distance so far (RenderBench.mesh: 1700× faster than the flat loop on 20k triangles).
-      // Perf: six separate vals, not tuples (a tuple of doubles is allocated and boxed).
-      val ox    = ray.origin.x
-      val oy    = ray.origin.y
-      val oz    = ray.origin.z
-      val ix    = 1 / ray.direction.x
-      val iy    = 1 / ray.direction.y
-      val iz    = 1 / ray.direction.z
-      var best  = limitIndex
-      var bestT = limit
-      var sp    = 0
-      stack(sp) = 0
-      sp += 1
-      while sp > 0 do
-        sp -= 1
-        val node = stack(sp)
-        if entry(node, ox, oy, oz, ix, iy, iz, bestT) < Double.PositiveInfinity then
-          val left = child(node)
-          if left < 0 then
-            var k   = first(node)
-            val end = k + count(node)
-            while k < end do
-              val i = order(k)
-              val t = Shape.distance(shapes(i), ray)
-              if t < bestT || (t == bestT && t < Double.PositiveInfinity && i < best) then
-                bestT = t
-                best = i
-              k += 1
-          else
-            // Push the farther child first so the nearer one is visited next.
-            val tl = entry(left, ox, oy, oz, ix, iy, iz, bestT)
-            val tr = entry(left + 1, ox, oy, oz, ix, iy, iz, bestT)
-            if tl <= tr then
-              if tr < Double.PositiveInfinity then
-                stack(sp) = left + 1; sp += 1
-              if tl < Double.PositiveInfinity then
-                stack(sp) = left; sp += 1
+      // distance so far (WorldBench.nearest, 20k triangles: 68 ns, 5000× faster than every shape).
+      slabs(ray) { (ox, oy, oz, ix, iy, iz) =>
+        var best  = limitIndex
+        var bestT = limit
+        var sp    = 0
+        stack(sp) = 0
+        sp += 1
+        while sp > 0 do
+          sp -= 1
+          val node = stack(sp)
+          if entry(node, ox, oy, oz, ix, iy, iz, bestT) < Double.PositiveInfinity then
+            val left = child(node)
+            if left < 0 then
+              var k   = first(node)
+              val end = k + count(node)
+              while k < end do
+                val i = order(k)
+                val t = Shape.distance(shapes(i), ray)
+                if t < bestT || (t == bestT && t < Double.PositiveInfinity && i < best) then
+                  bestT = t
+                  best = i
+                k += 1
             else
-              if tl < Double.PositiveInfinity then
-                stack(sp) = left; sp += 1
-              if tr < Double.PositiveInfinity then
-                stack(sp) = left + 1; sp += 1
-      best
+              // Push the farther child first so the nearer one is visited next.
+              val tl = entry(left, ox, oy, oz, ix, iy, iz, bestT)
+              val tr = entry(left + 1, ox, oy, oz, ix, iy, iz, bestT)
+              if tl <= tr then
+                if tr < Double.PositiveInfinity then
+                  stack(sp) = left + 1; sp += 1
+                if tl < Double.PositiveInfinity then
+                  stack(sp) = left; sp += 1
+              else
+                if tl < Double.PositiveInfinity then
+                  stack(sp) = left; sp += 1
+                if tr < Double.PositiveInfinity then
+                  stack(sp) = left + 1; sp += 1
+        best
+      }
 
   /** True when some indexed shape is hit by `ray` at a distance below `limit`; stops at the first. */
   def occluded(ray: Ray, limit: Double, stack: Array[Int]): Boolean =
     if order.isEmpty then false
     else
       // Perf: any hit will do, so no ordering and an early exit (shadow rays).
-      // Perf: six separate vals, not tuples (a tuple of doubles is allocated and boxed).
-      val ox  = ray.origin.x
-      val oy  = ray.origin.y
-      val oz  = ray.origin.z
-      val ix  = 1 / ray.direction.x
-      val iy  = 1 / ray.direction.y
-      val iz  = 1 / ray.direction.z
-      var hit = false
-      var sp  = 0
-      stack(sp) = 0
-      sp += 1
-      while sp > 0 && !hit do
-        sp -= 1
-        val node = stack(sp)
-        if entry(node, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity then
-          val left = child(node)
-          if left < 0 then
-            var k   = first(node)
-            val end = k + count(node)
-            while k < end && !hit do
-              hit = Shape.distance(shapes(order(k)), ray) < limit
-              k += 1
-          else
-            stack(sp) = left
-            stack(sp + 1) = left + 1
-            sp += 2
-      hit
+      slabs(ray) { (ox, oy, oz, ix, iy, iz) =>
+        var hit = false
+        var sp  = 0
+        stack(sp) = 0
+        sp += 1
+        while sp > 0 && !hit do
+          sp -= 1
+          val node = stack(sp)
+          if entry(node, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity then
+            val left = child(node)
+            if left < 0 then
+              var k   = first(node)
+              val end = k + count(node)
+              while k < end && !hit do
+                hit = Shape.distance(shapes(order(k)), ray) < limit
+                k += 1
+            else
+              stack(sp) = left
+              stack(sp + 1) = left + 1
+              sp += 2
+        hit
+      }
+
+  /** Runs `walk` on the ray's origin and inverse direction as six plain doubles.
+    *
+    * Perf: `inline` with an inline function: the lambda's body is spliced in, so there is no tuple
+    * or object to allocate (a tuple of doubles is boxed) and no call.
+    */
+  private inline def slabs[A](
+      ray: Ray
+  )(inline walk: (Double, Double, Double, Double, Double, Double) => A): A =
+    walk(
+      ray.origin.x,
+      ray.origin.y,
+      ray.origin.z,
+      1 / ray.direction.x,
+      1 / ray.direction.y,
+      1 / ray.direction.z
+    )
 
   /** The distance at which a ray enters node `n`'s box, or +∞ when it misses it before `limit`.
     *

@@ -106,3 +106,11 @@ trait MovieWorkspace extends munit.FunSuite:
 
   protected val colours =
     List("r=\"1\" g=\"0\" b=\"0\"", "r=\"0\" g=\"1\" b=\"0\"", "r=\"0\" g=\"0\" b=\"1\"")
+
+  /** A directory of links to `tools` (found on this PATH), to use as a PATH without the others. */
+  protected def pathWith(dir: Path, tools: String*): Path =
+    val bin = Files.createDirectories(dir)
+    for tool <- tools do
+      val real = run(List("bash", "-c", s"command -v $tool")).out.trim
+      if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
+    bin
