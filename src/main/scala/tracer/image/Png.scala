@@ -4,20 +4,11 @@ import java.awt.image.{BufferedImage, DataBuffer}
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, OutputStream}
 import javax.imageio.ImageIO
 
-/** Reads and writes PNG images through the JDK's image I/O. */
+/** Reads PNG images through the JDK's image I/O, and writes them with [[PngWriter]]. */
 object Png:
 
   /** Writes `bitmap` as an 8-bit RGB PNG (deeper bitmaps are scaled to 8 bits). */
-  def write(bitmap: Bitmap, out: OutputStream): Unit =
-    val image = BufferedImage(bitmap.width, bitmap.height, BufferedImage.TYPE_INT_RGB)
-    val rgb   = Array.tabulate(bitmap.width * bitmap.height) { i =>
-      val (x, y)          = (i % bitmap.width, i / bitmap.width)
-      def channel(c: Int) = to8Bit(bitmap.sample(x, y, c), bitmap.maxval)
-      (channel(0) << 16) | (channel(1) << 8) | channel(2)
-    }
-    image.setRGB(0, 0, bitmap.width, bitmap.height, rgb, 0, bitmap.width)
-    if !ImageIO.write(image, "png", out) then
-      throw IllegalStateException("no PNG writer in this JDK")
+  def write(bitmap: Bitmap, out: OutputStream): Unit = PngWriter.write(bitmap, out)
 
   /** The bytes of `bitmap` as a PNG file. */
   def encode(bitmap: Bitmap): Array[Byte] =
@@ -50,6 +41,3 @@ object Png:
         val rgb = image.getRGB(x, y)
         Colour.fromSamples((rgb >> 16) & 0xff, (rgb >> 8) & 0xff, rgb & 0xff, 255)
       }
-
-  private def to8Bit(sample: Int, maxval: Int): Int =
-    if maxval == 255 then sample else Colour.quantise(sample.toDouble / maxval, 255)
