@@ -180,9 +180,13 @@ object Shape:
 
   /** Equations 17–21: the nearer root for a ray from outside, the farther one from inside. */
   private def sphereDistance(s: Sphere, ray: Ray): Double =
-    val oc   = s.centre - ray.origin
-    val l2oc = oc.dot(oc)
-    val tca  = oc.dot(ray.direction)
+    // Perf: OC = Sc − R0 in three doubles, not a Vec3: until C2 compiles this (most of a short
+    // run) nothing is scalar-replaced, and a Vec3 a test is garbage (docs/performance.md, step 8).
+    val ocx  = s.centre.x - ray.origin.x
+    val ocy  = s.centre.y - ray.origin.y
+    val ocz  = s.centre.z - ray.origin.z
+    val l2oc = ocx * ocx + ocy * ocy + ocz * ocz
+    val tca  = ocx * ray.direction.x + ocy * ray.direction.y + ocz * ray.direction.z
     val t2hc = s.radiusSquared - l2oc + tca * tca
     if l2oc < s.radiusSquared then tca + Math.sqrt(t2hc)
     else if tca < 0 || t2hc < 0 then Double.PositiveInfinity
@@ -199,9 +203,12 @@ object Shape:
     val t = planeDistance(tr.normal, tr.distance, ray)
     if t == Double.PositiveInfinity then t
     else
-      val q  = ray.at(t) - tr.t0
-      val qa = q.dot(tr.a)
-      val qb = q.dot(tr.b)
+      // Perf: q = R0 + Rd·t − T0 in three doubles, as in sphereDistance.
+      val qx = ray.origin.x + ray.direction.x * t - tr.t0.x
+      val qy = ray.origin.y + ray.direction.y * t - tr.t0.y
+      val qz = ray.origin.z + ray.direction.z * t - tr.t0.z
+      val qa = qx * tr.a.x + qy * tr.a.y + qz * tr.a.z
+      val qb = qx * tr.b.x + qy * tr.b.y + qz * tr.b.z
       val u  = (tr.bb * qa - tr.ab * qb) / tr.denominator
       val v  = (qb - u * tr.ab) / tr.bb
       if u >= 0 && v >= 0 && u + v <= 1 then t else Double.PositiveInfinity
