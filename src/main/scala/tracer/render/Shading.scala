@@ -2,6 +2,7 @@ package tracer.render
 
 import tracer.geometry.{Hit, Ray, Shape}
 import tracer.image.Colour
+import tracer.math.Vec3
 import tracer.scene.Pigment
 
 /** The colour a ray brings back from the world (rendering.md, Colour of a hit).
@@ -20,14 +21,16 @@ final class Shading(world: World, mode: ShadingMode):
       val hit   = Shape.hitAt(shape, ray, Shape.distance(shape, ray))
       mode match
         case ShadingMode.Quick => pigment(i, hit) * Math.abs(hit.normal.dot(ray.direction))
-        case ShadingMode.Full  => lit(i, hit) + reflected(i, hit, ray, depth)
+        case ShadingMode.Full  =>
+          // Equations 40 and 43: shadow and reflected rays start just off the surface, on the
+          // side the ray came from.
+          val s0 = hit.point + hit.normal * Shading.Epsilon
+          lit(i, hit, s0) + reflected(i, hit, s0, ray, depth)
 
-  /** The sum over the lights visible from the hit of C ⊙ colour(L) · diffuse · |rn · Sd|. */
-  private def lit(i: Int, hit: Hit): Colour =
+  /** The sum over the lights visible from S0 of C ⊙ colour(L) · diffuse · |rn · Sd|. */
+  private def lit(i: Int, hit: Hit, s0: Vec3): Colour =
     val surface = world.surface(i)
     val colour  = pigment(i, hit)
-    // Equation 40: start shadow rays just off the surface, on the side the ray came from.
-    val s0 = hit.point + hit.normal * Shading.Epsilon
     // Perf: a while loop summing channels in locals: no Colour or closure per light
     // (RenderBench.few: see docs/performance.md, step 2).
     var r = 0.0
@@ -51,13 +54,12 @@ final class Shading(world: World, mode: ShadingMode):
   /** reflection · colour(reflected ray, depth − 1), or black when the surface is no mirror or the
     * depth is spent (equations 43–44).
     */
-  private def reflected(i: Int, hit: Hit, ray: Ray, depth: Int): Colour =
+  private def reflected(i: Int, hit: Hit, s0: Vec3, ray: Ray, depth: Int): Colour =
     val reflection = world.surface(i).reflection
     if reflection <= 0 || depth <= 0 then Colour.Black
     else
-      val origin    = hit.point + hit.normal * Shading.Epsilon
       val direction = ray.direction - hit.normal * (2 * hit.normal.dot(ray.direction))
-      colour(Ray(origin, direction), depth - 1) * reflection
+      colour(Ray(s0, direction), depth - 1) * reflection
 
   /** The surface colour C at the hit: the texel there, or the plain colour. */
   private def pigment(i: Int, hit: Hit): Colour = world.surface(i).pigment match
