@@ -65,6 +65,7 @@ object Ppm:
 private final class PpmReader(bytes: Array[Byte]):
   private var pos = 0
 
+  /** The decoded image, or what was expected where. */
   def read(): Either[String, Bitmap] =
     try Right(parse())
     catch case PpmReader.Malformed(message) => Left(message)

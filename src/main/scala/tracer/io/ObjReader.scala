@@ -56,6 +56,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
 
+  /** Reads every line: the mesh, or the first error with its line. */
   def run(): Either[String, ObjMesh] =
     try
       var line = reader.readLine()

@@ -64,6 +64,7 @@ object SceneSources:
 
 /** One element of the document with its line, for messages. */
 private final case class Element(node: Elem, line: Option[Int]):
+  /** The element's name. */
   def name: String = node.label
 
   /** An error about this element. */
@@ -81,6 +82,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   private type Result[A] = Either[SceneError, A]
   private val textures = mutable.Map.empty[String, Result[Texture]]
 
+  /** The scene the document describes, or its first error. */
   def scene: Result[Scene] =
     val root = element(doc.root)
     for
