@@ -44,24 +44,6 @@ object SceneXml:
       catch case e: java.io.IOException => Left(s"cannot read $path: $e")
     bytes.flatMap(b => parse(b, SceneSources.files(base)).left.map(e => s"$path: ${e.describe}"))
 
-/** Where a scene's textures and meshes come from, and where warnings about them go.
-  *
-  * @param texture loads a `<texture file="…">`
-  * @param mesh    loads a `<mesh file="…">`
-  * @param warn    receives warnings (skipped OBJ statements and faces), one line each
-  */
-final case class SceneSources(
-    texture: SceneXml.TextureLoader,
-    mesh: SceneXml.MeshLoader,
-    warn: String => Unit = _ => ()
-)
-
-/** Constructors for [[SceneSources]]. */
-object SceneSources:
-  /** Files relative to `base`, warnings to `warn`. */
-  def files(base: java.nio.file.Path, warn: String => Unit = _ => ()): SceneSources =
-    SceneSources(TextureFiles.loader(base), MeshFiles.loader(base), warn)
-
 /** One element of the document with its line, for messages. */
 private final case class Element(node: Elem, line: Option[Int]):
   /** The element's name. */
@@ -374,20 +356,6 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
     item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
-
-/** A mesh's placement: p ↦ T(Rz(Ry(Rx(scale·p)))), angles in degrees, as POV-Ray's `rotate`. */
-private final case class MeshTransform(scale: Double, degrees: Vec3, translation: Vec3):
-  private val (sx, cx) = (Math.sin(Math.toRadians(degrees.x)), Math.cos(Math.toRadians(degrees.x)))
-  private val (sy, cy) = (Math.sin(Math.toRadians(degrees.y)), Math.cos(Math.toRadians(degrees.y)))
-  private val (sz, cz) = (Math.sin(Math.toRadians(degrees.z)), Math.cos(Math.toRadians(degrees.z)))
-
-  /** The placed point. */
-  def apply(p: Vec3): Vec3 =
-    val s  = p * scale
-    val rx = Vec3(s.x, s.y * cx - s.z * sx, s.y * sx + s.z * cx)
-    val ry = Vec3(rx.x * cy + rx.z * sy, rx.y, -rx.x * sy + rx.z * cy)
-    val rz = Vec3(ry.x * cz - ry.y * sz, ry.x * sz + ry.y * cz, ry.z)
-    rz + translation
 
 private object SceneReader:
   /** A number as a person would write it: `-1`, not `-1.0`. */

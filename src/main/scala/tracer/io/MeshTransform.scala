@@ -1,0 +1,17 @@
+package tracer.io
+
+import tracer.math.Vec3
+
+/** A mesh's placement: p ↦ T(Rz(Ry(Rx(scale·p)))), angles in degrees, as POV-Ray's `rotate`. */
+private[io] final case class MeshTransform(scale: Double, degrees: Vec3, translation: Vec3):
+  private val (sx, cx) = (Math.sin(Math.toRadians(degrees.x)), Math.cos(Math.toRadians(degrees.x)))
+  private val (sy, cy) = (Math.sin(Math.toRadians(degrees.y)), Math.cos(Math.toRadians(degrees.y)))
+  private val (sz, cz) = (Math.sin(Math.toRadians(degrees.z)), Math.cos(Math.toRadians(degrees.z)))
+
+  /** The placed point. */
+  def apply(p: Vec3): Vec3 =
+    val s  = p * scale
+    val rx = Vec3(s.x, s.y * cx - s.z * sx, s.y * sx + s.z * cx)
+    val ry = Vec3(rx.x * cy + rx.z * sy, rx.y, -rx.x * sy + rx.z * cy)
+    val rz = Vec3(ry.x * cz - ry.y * sz, ry.x * sz + ry.y * cz, ry.z)
+    rz + translation
