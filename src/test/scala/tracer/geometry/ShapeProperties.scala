@@ -27,8 +27,10 @@ class ShapeProperties extends ScalaCheckSuite:
     case s: Sphere   => unitVec.map(d => s.centre + d * s.radius)
     case p: Plane    => vec.map(q => q - p.normal * (q.dot(p.normal) - p.distance))
     case t: Triangle =>
-      for u <- Gen.choose(0.05, 0.85); v <- Gen.choose(0.05, 0.95 - u)
-      yield t.t0 + t.a * u + t.b * v
+      // v as a fraction of what is left after u, so no generator's bounds depend on another's
+      // value (a dependent Gen.choose once failed with crossed bounds under some seed).
+      for u <- Gen.choose(0.05, 0.85); f <- Gen.choose(0.0, 1.0)
+      yield t.t0 + t.a * u + t.b * (0.05 + f * Math.max(0.0, 0.9 - u))
 
   /** A shape, a point on it, and a ray from a random origin aimed at that point. */
   private val aimed: Gen[(Shape, Vec3, Ray)] =
@@ -53,9 +55,18 @@ class ShapeProperties extends ScalaCheckSuite:
 
   property("the normal at a hit has unit length and faces the ray"):
     forAll(aimed) { (s, _, r) =>
+      // Equation 20 (t2hc = Sr² − L2oc + tca²) cancels two large terms: its rounding error is about
+      // 1e-16·L2oc, so a grazing hit's t, and the normal (ri − Sc)/Sr, are off by up to
+      // sqrt(1e-16·L2oc)/Sr — 7e-5 for a 0.2-unit sphere 1400 units away. The course's formula
+      // is what the spec asks for, so the tolerance follows it.
+      val tolerance = s match
+        case sphere: Sphere => 1e-9 + 1e-7 * (1 + sphere.centre.distance(r.origin)) / sphere.radius
+        case _              => 1e-9
       Shape
         .intersect(s, r)
-        .forall(h => Math.abs(h.normal.length - 1) < 1e-9 && h.normal.dot(r.direction) <= 1e-9)
+        .forall(h =>
+          Math.abs(h.normal.length - 1) < tolerance && h.normal.dot(r.direction) <= tolerance
+        )
     }
 
   property("a sphere's outward normal points along p − c"):
