@@ -1,6 +1,7 @@
 package tracer.cli
 
 import scopt.{OEffect, OParser}
+import tracer.render.CameraConfig
 
 /** The command line as given: each optional value is `None` when its option was absent.
   *
@@ -19,7 +20,7 @@ import scopt.{OEffect, OParser}
 final case class Options(
     output: String = "",
     quick: Boolean = false,
-    depth: Int = 5,
+    depth: Int = CameraConfig.DefaultDepth,
     timing: Boolean = false,
     threads: Option[Int] = None,
     zoom: Option[Double] = None,

@@ -5,6 +5,7 @@ import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.io.SceneWriter
 import tracer.math.Vec3
+import tracer.render.CameraConfig
 import tracer.scene.*
 
 /** The benchmark scenes of `docs/performance.md`, generated: a few objects, a field of 500
@@ -25,7 +26,7 @@ object BenchScenes:
   /** Writes `NAME.xml` and `NAME.pov` for every scene into `dir`; the meshes' XML names their
     * triangles in `NAME.obj` through a `<mesh>` element, as a user would.
     */
-  def writeAll(dir: Path, depth: Int = 5): Unit =
+  def writeAll(dir: Path, depth: Int = CameraConfig.DefaultDepth): Unit =
     Files.createDirectories(dir)
     names.foreach { name =>
       val s = scene(name)

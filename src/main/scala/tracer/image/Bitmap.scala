@@ -122,14 +122,6 @@ object Bitmap:
     }
     new Bitmap(first.width, height.toInt, first.maxval, samples)
 
-  /** Builds a bitmap from samples that a codec has read; `fill(data)` writes every sample. */
-  private[image] def build(width: Int, height: Int, maxval: Int)(
-      fill: Array[Char] => Unit
-  ): Bitmap =
-    val data = allocate(width, height, maxval)
-    fill(data)
-    new Bitmap(width, height, maxval, data)
-
   /** The raw samples, for the codecs in this package; callers must not change them. */
   private[image] def samplesOf(bitmap: Bitmap): Array[Char] = bitmap.samples
 

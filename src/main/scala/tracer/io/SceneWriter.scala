@@ -60,10 +60,10 @@ object SceneWriter:
   private def colour(name: String, c: Colour): String =
     s"""<$name r="${number(c.r)}" g="${number(c.g)}" b="${number(c.b)}"/>"""
 
-  /** The shortest decimal that reads back as exactly `d` (Java's `Double.toString`). */
+  /** `d` in the scene format, reading back as exactly `d`. */
   private def number(d: Double): String =
     require(d.isFinite, s"a scene holds only finite numbers, got $d")
-    if d == Math.rint(d) && Math.abs(d) < 1e15 then d.toLong.toString else d.toString
+    Decimal.show(d)
 
   private def escape(text: String): String =
     text.flatMap {

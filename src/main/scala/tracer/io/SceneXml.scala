@@ -60,7 +60,7 @@ private final case class Element(node: Elem, line: Option[Int]):
 
 /** Walks one parsed document and builds the scene, stopping at the first error. */
 private final class SceneReader(doc: XmlDocument, sources: SceneSources):
-  import SceneReader.show
+  import Decimal.show
   private type Result[A] = Either[SceneError, A]
   private val textures = mutable.Map.empty[String, Result[Texture]]
 
@@ -328,7 +328,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   private def number(e: Element, key: String): Result[Option[Double]] =
     traverseOption(e.attribute(key)) { raw =>
       val text  = raw.trim
-      val value = if SceneReader.Decimal.matches(text) then text.toDoubleOption else None
+      val value = if Decimal.Pattern.matches(text) then text.toDoubleOption else None
       value
         .filter(_.isFinite)
         .toRight(e.error(s"attribute $key must be a finite decimal number, got '$raw'"))
@@ -356,11 +356,3 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
     item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
-
-private object SceneReader:
-  /** A number as a person would write it: `-1`, not `-1.0`. */
-  def show(d: Double): String =
-    if d == Math.rint(d) && Math.abs(d) < 1e15 then d.toLong.toString else d.toString
-
-  /** A decimal number as the scene format allows it: `-1`, `0.25`, `2.5e-3`. */
-  val Decimal = raw"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?".r

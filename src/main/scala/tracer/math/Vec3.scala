@@ -54,9 +54,6 @@ final case class Vec3(x: Double, y: Double, z: Double):
     val len = length
     if len > 0 && len < Double.PositiveInfinity then this / len else fallback
 
-  /** True when every component is finite (neither NaN nor infinite). */
-  def isFinite: Boolean = x.isFinite && y.isFinite && z.isFinite
-
   /** A compact `(x, y, z)` rendering for messages. */
   override def toString: String = s"($x, $y, $z)"
 
