@@ -1,6 +1,6 @@
 // tracer: a Whitted ray tracer in Scala 3.
 ThisBuild / scalaVersion := "3.8.3"
-ThisBuild / version      := "1.0.0"
+ThisBuild / version      := "2.0.0"
 ThisBuild / organization := "tracer"
 
 ThisBuild / scalacOptions ++= Seq(
@@ -22,7 +22,22 @@ lazy val root = project
       "org.scalameta"          %% "munit-scalacheck" % "1.2.0"  % Test,
       "org.scalacheck"         %% "scalacheck"       % "1.19.0" % Test
     ),
-    Compile / mainClass        := Some("tracer.cli.Main"),
+    Compile / mainClass := Some("tracer.cli.Main"),
+    // tracer.BuildInfo: the build's version, for `tracer --version`.
+    Compile / sourceGenerators += Def.task {
+      val file = (Compile / sourceManaged).value / "tracer" / "BuildInfo.scala"
+      IO.write(
+        file,
+        s"""package tracer
+           |
+           |/** Facts about this build, written by sbt (build.sbt). */
+           |object BuildInfo:
+           |  /** The version of the build, as `tracer --version` prints it. */
+           |  val version: String = "${version.value}"
+           |""".stripMargin
+      )
+      Seq(file)
+    }.taskValue,
     assembly / mainClass       := Some("tracer.cli.Main"),
     assembly / assemblyJarName := "tracer.jar",
     // System tests start the real command; they need their own JVM and the working directory.

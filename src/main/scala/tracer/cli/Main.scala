@@ -1,14 +1,16 @@
 package tracer.cli
 
-import java.io.{InputStream, PrintStream}
-import java.nio.file.Path
+import java.io.{IOException, InputStream, PrintStream}
+import java.nio.file.{Files, Path}
 import scala.util.control.NonFatal
 import tracer.image.Bitmap
 import tracer.io.{Images, OutputFile, SceneSources, SceneXml}
 import tracer.render.{CameraConfig, Renderer, ShadingMode}
 import tracer.scene.Scene
 
-/** The `tracer` command: `tracer [options] OUTPUT < scene.xml` (cli.md). */
+/** The `tracer` command: `tracer [options] OUTPUT < scene.xml` or `tracer -i scene.xml OUTPUT`
+  * (docs/cli.md).
+  */
 object Main:
 
   /** Exit status of a successful run. */
@@ -38,13 +40,19 @@ object Main:
         case Command.Help(usage) =>
           out.println(usage)
           Success
+        case Command.Version(line) =>
+          out.println(line)
+          Success
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
-          render(options, in, out, err, cwd).fold(fail(Failure, _), _ => Success)
+          render(options, in, out, err, cwd).fold(p => fail(p.status, p.message), _ => Success)
     catch
       case _: OutOfMemoryError =>
         fail(Failure, "out of memory: try a smaller image or more heap (-Xmx)")
       case NonFatal(e) => fail(Failure, s"internal error: $e")
+
+  /** Why a run failed: the exit status and the message. */
+  private final case class Problem(status: Int, message: String)
 
   private def render(
       options: Options,
@@ -52,22 +60,58 @@ object Main:
       out: PrintStream,
       err: PrintStream,
       cwd: Path
-  ): Either[String, Unit] =
-    val output = cwd.resolve(options.output)
+  ): Either[Problem, Unit] =
+    def failure(message: String) = Problem(Failure, message)
+    val output                   = cwd.resolve(options.output)
     for
-      _     <- OutputFile.checkWritable(output)
-      scene <- SceneXml
-        .parse(in.readAllBytes(), SceneSources.files(cwd, w => err.println(s"tracer: warning: $w")))
+      _              <- OutputFile.checkWritable(output).left.map(failure)
+      (bytes, where) <- sceneBytes(options.input, in, cwd).left.map(failure)
+      scene          <- SceneXml
+        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
         .left
-        .map(e => s"scene: ${e.describe}")
+        .map(e => failure(s"scene: ${e.describe}"))
       config = cameraConfig(scene, options)
-      _ <- fitsInMemory(config)
+      band <- rowsToRender(options.band, config.rows)
+      _    <- fitsInMemory(config.columns, band.size).left.map(failure)
       threads         = options.threads.getOrElse(Renderer.defaultThreads)
       (image, millis) = timed(
-        withProgress(err, config.rows)(Renderer.render(scene, config, threads, _))
+        withProgress(err, band.size)(Renderer.render(scene, config, threads, _, band))
       )
-      _ <- Images.save(image, output)
+      _ <- Images.save(image, output).left.map(failure)
     yield if options.timing then out.println(s"Tracetime: $millis ms")
+
+  /** The scene's bytes and the directory its relative paths resolve against: FILE's own
+    * directory with `-i FILE`, else standard input and the working directory.
+    */
+  private def sceneBytes(
+      input: Option[String],
+      in: InputStream,
+      cwd: Path
+  ): Either[String, (Array[Byte], Path)] =
+    input match
+      case None       => Right((in.readAllBytes(), cwd))
+      case Some(name) =>
+        val file = cwd.resolve(name)
+        try
+          if Files.isDirectory(file) then Left(s"cannot read scene file $name: it is a directory")
+          else Right((Files.readAllBytes(file), file.toAbsolutePath.getParent))
+        catch
+          case _: java.nio.file.NoSuchFileException =>
+            Left(s"cannot read scene file $name: no such file")
+          case e: IOException => Left(s"cannot read scene file $name: ${e.getMessage}")
+
+  /** The rows `-R` asks for, which must lie inside the picture's `rows`; all rows without it. */
+  private def rowsToRender(band: Option[Range], rows: Int): Either[Problem, Range] =
+    band match
+      case None                     => Right(0 until rows)
+      case Some(b) if b.end <= rows => Right(b)
+      case Some(b)                  =>
+        Left(
+          Problem(
+            UsageError,
+            s"-R ${b.start}:${b.end} reaches past the picture's $rows rows (see tracer --help)"
+          )
+        )
 
   /** The camera configuration: the scene's camera with the command line's overrides (cli.md). */
   def cameraConfig(scene: Scene, options: Options): CameraConfig =
@@ -88,12 +132,12 @@ object Main:
       rows = size.rows,
       depth = options.depth,
       mode = if options.quick then ShadingMode.Quick else ShadingMode.Full,
-      samples = options.samples
+      samples = options.samples,
+      encoding = options.encoding
     )
 
   /** Refuses a picture whose pixels cannot fit in this JVM's memory, before any is rendered. */
-  private def fitsInMemory(config: CameraConfig): Either[String, Unit] =
-    val (x, y) = (config.columns, config.rows)
+  private def fitsInMemory(x: Int, y: Int): Either[String, Unit] =
     Bitmap.checkSize(x, y).left.map(why => s"image too large: $why").flatMap { _ =>
       // The rows and the stacked image: 6 bytes a pixel each, with room to spare for the rest.
       val needed    = 3L * x * y * 2 * 2 + (64L << 20)

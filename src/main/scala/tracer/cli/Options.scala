@@ -1,6 +1,8 @@
 package tracer.cli
 
 import scopt.{OEffect, OParser}
+import tracer.BuildInfo
+import tracer.image.Encoding
 import tracer.render.CameraConfig
 
 /** The command line as given: each optional value is `None` when its option was absent.
@@ -16,6 +18,10 @@ import tracer.render.CameraConfig
   * @param width   `-w`, the image width in world units W
   * @param height  `-h`, the image height in world units H
   * @param samples `-a n`, n × n antialiasing samples a pixel
+  * @param encoding `-g`, how the output is encoded
+  * @param band    `-R a:b`, the rows a until b to render, when only a band is wanted
+  * @param input   `-i FILE`, the scene file; standard input when absent
+  * @param version `--version`, print the version instead of rendering
   */
 final case class Options(
     output: String = "",
@@ -28,7 +34,11 @@ final case class Options(
     rows: Option[Int] = None,
     width: Option[Double] = None,
     height: Option[Double] = None,
-    samples: Int = 1
+    samples: Int = 1,
+    encoding: Encoding = Encoding.Linear,
+    band: Option[Range] = None,
+    input: Option[String] = None,
+    version: Boolean = false
 )
 
 /** What the command line asks for: a render, the usage text, or a usage error. */
@@ -38,6 +48,9 @@ enum Command:
 
   /** Print this usage text and exit successfully (`--help`). */
   case Help(usage: String)
+
+  /** Print `tracer VERSION` and exit successfully (`--version`). */
+  case Version(line: String)
 
   /** Report this usage error and exit with status 2. */
   case UsageError(message: String)
@@ -53,6 +66,10 @@ object Options:
       Command.Help(usage)
     else
       (result, errors) match
+        case (Some(options), Nil) if options.version =>
+          Command.Version(s"tracer ${BuildInfo.version}")
+        case (Some(options), Nil) if options.output.isEmpty =>
+          Command.UsageError("Missing argument OUTPUT")
         case (Some(options), Nil) => Command.Render(options)
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
@@ -69,11 +86,22 @@ object Options:
   private def atLeast(name: String, min: Int)(v: Int): Either[String, Unit] =
     if v >= min then Right(()) else Left(s"$name must be an integer of at least $min, got $v")
 
+  /** `a:b` with integers 0 ≤ a < b, as the rows a until b; whether b ≤ Y is checked once Y is known. */
+  private[cli] def band(text: String): Either[String, Range] =
+    text.split(":", -1) match
+      case Array(a, b) =>
+        (a.toIntOption, b.toIntOption) match
+          case (Some(first), Some(end)) if first >= 0 && first < end => Right(first until end)
+          case _ => Left(s"-R must be a:b with integers 0 <= a < b, got '$text'")
+      case _ => Left(s"-R must be a:b with integers 0 <= a < b, got '$text'")
+
   private val parser =
     import builder.*
     OParser.sequence(
       programName("tracer"),
-      head("tracer: renders the XML scene on standard input (tracer [options] OUTPUT < scene.xml)"),
+      head(
+        "tracer: renders an XML scene (tracer [options] OUTPUT < scene.xml, or -i scene.xml)"
+      ),
       opt[Unit]('q', "quick")
         .action((_, o) => o.copy(quick = true))
         .text("quick mode: no shadows, no reflection"),
@@ -123,8 +151,26 @@ object Options:
         )
         .action((v, o) => o.copy(samples = v))
         .text("antialiasing: average n×n samples a pixel, 1 to 16 (default 1)"),
+      opt[String]('g', "gamma")
+        .valueName("srgb|G")
+        .validate(v => Encoding.parse(v).map(_ => ()))
+        .action((v, o) => o.copy(encoding = Encoding.parse(v).getOrElse(Encoding.Linear)))
+        .text("encode the output for display: srgb, or a gamma G > 0 (default 1, linear)"),
+      opt[String]('R', "rows")
+        .valueName("a:b")
+        .validate(v => band(v).map(_ => ()))
+        .action((v, o) => o.copy(band = band(v).toOption))
+        .text("render only rows a to b-1 of the picture (row 0 at the top), 0 <= a < b <= ypix"),
+      opt[String]('i', "input")
+        .valueName("FILE")
+        .action((v, o) => o.copy(input = Some(v)))
+        .text("read the scene from FILE, its textures and meshes relative to FILE's directory"),
+      opt[Unit]("version")
+        .action((_, o) => o.copy(version = true))
+        .text("print the version and exit"),
       help("help").text("print this usage and exit"),
       arg[String]("OUTPUT")
+        .optional()
         .action((v, o) => o.copy(output = v))
         .text("the image file to write: .png for PNG, anything else for binary PPM"),
       note(

@@ -82,12 +82,15 @@ object Plane:
   *
   * @param textureCorners the texture coordinates of the three corners, for mesh triangles whose
   *   OBJ file gives them; without them a texture maps T0, T1, T2 to (0, 0), (1, 0), (0, 1)
+  * @param cornerNormals  the unit normals at the three corners of a smooth mesh's face, which
+  *   shading interpolates (scene-format-v2, Smooth meshes); without them the face is flat
   */
 final case class Triangle(
     t0: Vec3,
     t1: Vec3,
     t2: Vec3,
-    textureCorners: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)] = None
+    textureCorners: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)] = None,
+    cornerNormals: Option[(Vec3, Vec3, Vec3)] = None
 ) extends Shape:
   /** The leg a = T1 − T0. */
   val a: Vec3 = t1 - t0
@@ -155,6 +158,18 @@ object Shape:
         Hit(t, point, if startsInside(s, ray) then -outward else outward)
       case p: Plane     => Hit(t, point, facing(p.normal, ray))
       case tr: Triangle => Hit(t, point, facing(tr.normal, ray))
+
+  /** The normal that shades the hit `hit` of `ray` on `shape`, facing the side the ray came from:
+    * the geometric normal, except on a smooth triangle, where it is the corners' normals
+    * interpolated with the hit's barycentric weights and normalised (POV-Ray's `smooth_triangle`).
+    */
+  def shadingNormal(shape: Shape, hit: Hit, ray: Ray): Vec3 = shape match
+    case tr: Triangle if tr.cornerNormals.isDefined =>
+      val (n0, n1, n2) = tr.cornerNormals.get
+      val (u, v)       = triangleCoordinates(tr, hit.point - tr.t0)
+      val blended      = n0 * (1 - u - v) + n1 * u + n2 * v
+      facing(blended.normalisedOr(hit.normal), ray)
+    case _ => hit.normal
 
   /** The texture coordinates of `point` on `shape` (rendering.md, Textures).
     *

@@ -9,9 +9,10 @@ private[io] final case class MeshTransform(scale: Double, degrees: Vec3, transla
   private val (sz, cz) = (Math.sin(Math.toRadians(degrees.z)), Math.cos(Math.toRadians(degrees.z)))
 
   /** The placed point. */
-  def apply(p: Vec3): Vec3 =
-    val s  = p * scale
-    val rx = Vec3(s.x, s.y * cx - s.z * sx, s.y * sx + s.z * cx)
+  def apply(p: Vec3): Vec3 = turn(p * scale) + translation
+
+  /** A direction (a normal) as placed: rotated only, since the scale is uniform. */
+  def turn(d: Vec3): Vec3 =
+    val rx = Vec3(d.x, d.y * cx - d.z * sx, d.y * sx + d.z * cx)
     val ry = Vec3(rx.x * cy + rx.z * sy, rx.y, -rx.x * sy + rx.z * cy)
-    val rz = Vec3(ry.x * cz - ry.y * sz, ry.x * sz + ry.y * cz, ry.z)
-    rz + translation
+    Vec3(ry.x * cz - ry.y * sz, ry.x * sz + ry.y * cz, ry.z)

@@ -7,27 +7,29 @@ import scala.collection.mutable
 import tracer.geometry.SurfaceCoordinates
 import tracer.math.Vec3
 
-/** One face of an OBJ file after fanning: three corners in the file's coordinates, and their
-  * texture coordinates when every corner has one.
+/** One face of an OBJ file after fanning: three corners in the file's coordinates, their
+  * texture coordinates when every corner has one, and their `vn` normals (as written, not
+  * normalised) when every corner has one.
   */
 final case class ObjTriangle(
     a: Vec3,
     b: Vec3,
     c: Vec3,
-    uv: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)]
+    uv: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)],
+    normals: Option[(Vec3, Vec3, Vec3)] = None
 )
 
 /** The triangles of an OBJ file, and the kinds of statement it skipped (for one warning). */
 final case class ObjMesh(triangles: Vector[ObjTriangle], skippedKinds: List[String])
 
-/** Reads Wavefront OBJ files as scene-format.md's `mesh` element describes: `v`, `vt` and `f` in
-  * all four vertex forms, negative indices, polygons as fans; `vn` and the grouping and material
+/** Reads Wavefront OBJ files as scene-format.md's `mesh` element describes: `v`, `vt`, `vn` and
+  * `f` in all four vertex forms, negative indices, polygons as fans; the grouping and material
   * statements ignored, anything else skipped and reported.
   */
 object ObjReader:
 
   /** Statements that are read and ignored without a warning. */
-  val Ignored: Set[String] = Set("vn", "o", "g", "s", "mtllib", "usemtl", "l", "p")
+  val Ignored: Set[String] = Set("o", "g", "s", "mtllib", "usemtl", "l", "p")
 
   /** Reads the OBJ file `path`, naming it `name` in errors ("name line 12: …"). */
   def read(path: Path, name: String): Either[String, ObjMesh] =
@@ -52,6 +54,8 @@ private final class ObjParser(reader: BufferedReader, name: String):
   private var vertexCount  = 0
   private val texture      = DoubleBuffer()
   private var textureCount = 0
+  private val normals      = DoubleBuffer()
+  private var normalCount  = 0
   private val triangles    = Vector.newBuilder[ObjTriangle]
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
@@ -79,6 +83,10 @@ private final class ObjParser(reader: BufferedReader, name: String):
           texture += number(words(1));
           texture += (if words.length > 2 then number(words(2)) else 0.0)
           textureCount += 1
+        case "vn" =>
+          if words.length < 4 then fail("a normal needs x, y and z")
+          normals += number(words(1)); normals += number(words(2)); normals += number(words(3))
+          normalCount += 1
         case "f"                             => face(words)
         case kind if ObjReader.Ignored(kind) => ()
         case kind                            => skipped += kind
@@ -89,6 +97,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
     if corners < 3 then fail(s"a face needs at least three vertices, got $corners")
     val v = new Array[Int](corners)
     val t = new Array[Int](corners)
+    val n = new Array[Int](corners)
     for k <- 0 until corners do
       val parts = words(k + 1).split("/", -1)
       if parts.length > 3 || parts(0).isEmpty then fail(s"malformed face vertex '${words(k + 1)}'")
@@ -97,18 +106,22 @@ private final class ObjParser(reader: BufferedReader, name: String):
         if parts.length > 1 && parts(1).nonEmpty then
           index(parts(1), textureCount, "texture coordinate")
         else -1
-      if parts.length > 2 && parts(2).nonEmpty then
-        index(parts(2), Int.MaxValue, "normal") // checked, unused
-    fan(v, t)
+      n(k) =
+        if parts.length > 2 && parts(2).nonEmpty then index(parts(2), normalCount, "normal")
+        else -1
+    fan(v, t, n)
 
   /** The triangles (v0, vi, vi+1) of a polygon. */
-  private def fan(v: Array[Int], t: Array[Int]): Unit =
+  private def fan(v: Array[Int], t: Array[Int], n: Array[Int]): Unit =
     val textured = t.forall(_ >= 0)
+    val normed   = n.forall(_ >= 0)
     for k <- 1 until v.length - 1 do
-      val uv = Option.when(textured)((uvAt(t(0)), uvAt(t(k)), uvAt(t(k + 1))))
-      triangles += ObjTriangle(vertexAt(v(0)), vertexAt(v(k)), vertexAt(v(k + 1)), uv)
+      val uv      = Option.when(textured)((uvAt(t(0)), uvAt(t(k)), uvAt(t(k + 1))))
+      val corners = Option.when(normed)((normalAt(n(0)), normalAt(n(k)), normalAt(n(k + 1))))
+      triangles += ObjTriangle(vertexAt(v(0)), vertexAt(v(k)), vertexAt(v(k + 1)), uv, corners)
 
   private def vertexAt(i: Int) = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
+  private def normalAt(i: Int) = Vec3(normals(3 * i), normals(3 * i + 1), normals(3 * i + 2))
   private def uvAt(i: Int)     = SurfaceCoordinates(texture(2 * i), texture(2 * i + 1))
 
   /** A 1-based or negative OBJ index, as a 0-based index below `defined`. */
@@ -116,9 +129,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
     val i        = text.toIntOption.getOrElse(fail(s"malformed $what index '$text'"))
     val resolved = if i > 0 then i - 1 else if i < 0 then defined + i else -1
     if resolved < 0 || resolved >= defined then
-      fail(s"$what index $i is out of range (${
-          if defined == Int.MaxValue then "must not be 0" else s"$defined defined so far"
-        })")
+      fail(s"$what index $i is out of range ($defined defined so far)")
     resolved
 
   /** A finite decimal number: digits, sign, point and exponent only (no NaN, no hex). */

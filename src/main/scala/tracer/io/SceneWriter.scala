@@ -10,6 +10,9 @@ import tracer.scene.*
   *
   * Numbers are written exactly (shortest round-trip decimal), so reading the text back gives the
   * same scene; a texture is written as its `name`, which must be the file it can be loaded from.
+  * Version 2 attributes are written only where they differ from their defaults, so a version 1
+  * scene is written as version 1. A smooth mesh triangle has no element of its own (only
+  * `<mesh smooth="true">` makes them) and is refused.
   */
 object SceneWriter:
 
@@ -21,7 +24,11 @@ object SceneWriter:
     lines ++= camera(scene.camera)
     lines += s"  ${colour("background", scene.background)}"
     scene.lights.foreach { l =>
-      lines += s"  <light>${vector("location", l.location)}${colour("colour", l.colour)}</light>"
+      val area = l.area.fold("")(a =>
+        s"""<area samples-a="${a.samplesA}" samples-b="${a.samplesB}">""" +
+          s"""${vector("a", a.a)}${vector("b", a.b)}</area>"""
+      )
+      lines += s"  <light>${vector("location", l.location)}${colour("colour", l.colour)}$area</light>"
     }
     scene.objects.foreach(o => lines += s"  ${sceneObject(o)}")
     lines += "</scene>"
@@ -44,15 +51,27 @@ object SceneWriter:
       case p: Plane =>
         s"""<plane distance="${number(p.distance)}">${vector("normal", p.normal)}$surface</plane>"""
       case t: Triangle =>
+        require(
+          t.cornerNormals.isEmpty,
+          "a smooth triangle cannot be written as <triangle>: use <mesh smooth=\"true\">"
+        )
         s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}$surface</triangle>"
 
   private def surface(s: Surface): String =
     val pigment = s.pigment match
       case Pigment.Solid(c)          => colour("colour", c)
       case Pigment.Textured(texture) => s"""<texture file="${escape(texture.name)}"/>"""
-    s"""<surface diffuse="${number(s.diffuse)}" reflection="${number(
-        s.reflection
-      )}">$pigment</surface>"""
+    val defaults = Surface()
+    val extras   = List(
+      ("phong", s.phong, defaults.phong),
+      ("phong-size", s.phongSize, defaults.phongSize),
+      ("specular", s.specular, defaults.specular),
+      ("roughness", s.roughness, defaults.roughness),
+      ("transmit", s.transmit, defaults.transmit),
+      ("ior", s.ior, defaults.ior)
+    ).collect { case (key, value, default) if value != default => s""" $key="${number(value)}"""" }
+    s"""<surface diffuse="${number(s.diffuse)}" reflection="${number(s.reflection)}"""" +
+      s"""${extras.mkString}>$pigment</surface>"""
 
   private def vector(name: String, v: Vec3): String =
     s"""<$name x="${number(v.x)}" y="${number(v.y)}" z="${number(v.z)}"/>"""

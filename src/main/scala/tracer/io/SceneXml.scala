@@ -100,12 +100,36 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def light(e: Element): Result[Light] =
     for
-      children <- contents(e, Set(), Set("location", "colour", "color"))
+      children <- contents(e, Set(), Set("location", "colour", "color", "area"))
       location <- requiredVector(e, children, "location")
       colour   <- atMostOne(e, children, "colour", "color").flatMap(
         _.fold(Right(Colour.White))(lightColour)
       )
-    yield Light(location, colour)
+      area <- atMostOne(e, children, "area").flatMap(traverseOption(_)(areaLight))
+    yield Light(location, colour, area)
+
+  /** An `<area samples-a samples-b>` with its axes `<a>` and `<b>` (scene-format-v2). */
+  private def areaLight(e: Element): Result[AreaLight] =
+    for
+      children <- contents(e, Set("samples-a", "samples-b"), Set("a", "b"))
+      samplesA <- samples(e, "samples-a")
+      samplesB <- samples(e, "samples-b")
+      a        <- requiredVector(e, children, "a")
+      b        <- requiredVector(e, children, "b")
+      _        <-
+        if a.cross(b).normalised.isDefined then Right(())
+        else e.fail(s"the axes <a> $a and <b> $b must be non-zero and not parallel")
+    yield AreaLight(a, b, samplesA, samplesB)
+
+  /** A required whole number of sub-lights, 1 to [[AreaLight.MaxSamples]]. */
+  private def samples(e: Element, key: String): Result[Int] =
+    requiredNumber(e, key).flatMap { v =>
+      if v.isWhole && v >= 1 && v <= AreaLight.MaxSamples then Right(v.toInt)
+      else
+        e.fail(
+          s"attribute $key must be a whole number from 1 to ${AreaLight.MaxSamples}, got ${show(v)}"
+        )
+    }
 
   private def sceneObjects(e: Element): Result[List[SceneObject]] = e.name match
     case "sphere" => sphere(e).map(List(_))
@@ -113,27 +137,38 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
     case "mesh"   => mesh(e)
     case _        => triangle(e).map(List(_))
 
-  /** A `<mesh>`: the OBJ file's triangles scaled, rotated (x, then y, then z) and translated. */
+  /** A `<mesh>`: the OBJ file's triangles scaled, rotated (x, then y, then z) and translated;
+    * with `smooth="true"`, faces whose corners all have normals shade with them interpolated.
+    */
   private def mesh(e: Element): Result[List[SceneObject]] =
     for
-      children  <- contents(e, Set("file", "scale"), Set("rotate", "translate", "surface"))
-      file      <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
-      scale     <- positive(e, "scale", 1.0)
-      rotate    <- optionalVector(e, children, Vec3.Zero, "rotate")
+      children <- contents(e, Set("file", "scale", "smooth"), Set("rotate", "translate", "surface"))
+      file     <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
+      scale    <- positive(e, "scale", 1.0)
+      smooth   <- boolean(e, "smooth", default = false)
+      rotate   <- optionalVector(e, children, Vec3.Zero, "rotate")
       translate <- optionalVector(e, children, Vec3.Zero, "translate")
-      surface   <- surface(e, children, texturable = true)
+      surface   <- surface(e, children, texturable = true, refractive = false)
       obj       <- sources.mesh(file).left.map(why => e.error(s"cannot read mesh file: $why"))
       _ <- if obj.triangles.nonEmpty then Right(()) else e.fail(s"mesh file $file has no faces")
     yield
-      val place               = MeshTransform(scale, rotate, translate)
-      val placed              = obj.triangles.map(t => (place(t.a), place(t.b), place(t.c), t.uv))
+      val place = MeshTransform(scale, rotate, translate)
+      // Normals turn with the mesh; a face with a zero normal at a corner stays flat.
+      def normals(t: ObjTriangle): Option[(Vec3, Vec3, Vec3)] =
+        for
+          (n0, n1, n2) <- t.normals if smooth
+          a            <- place.turn(n0).normalised
+          b            <- place.turn(n1).normalised
+          c            <- place.turn(n2).normalised
+        yield (a, b, c)
+      val placed              = obj.triangles.map(t => (place(t.a), place(t.b), place(t.c), t))
       val (proper, collinear) = placed.partition((a, b, c, _) => Triangle.isProper(a, b, c))
       if obj.skippedKinds.nonEmpty then
         sources.warn(s"$file: skipped unsupported statements: ${obj.skippedKinds.mkString(", ")}")
       if collinear.nonEmpty then
         val faces = if collinear.length == 1 then "face" else "faces"
         sources.warn(s"$file: skipped ${collinear.length} $faces whose corners are collinear")
-      proper.map((a, b, c, uv) => SceneObject(Triangle(a, b, c, uv), surface)).toList
+      proper.map((a, b, c, t) => SceneObject(Triangle(a, b, c, t.uv, normals(t)), surface)).toList
 
   private def sphere(e: Element): Result[SceneObject] =
     for
@@ -152,7 +187,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
         if cosine <= Sphere.RightAngleTolerance then Right(())
         else
           e.fail(s"<pole> $pole and <equator> $equator must be at right angles (|cos| = $cosine)")
-      surface <- surface(e, children, texturable = true)
+      surface <- surface(e, children, texturable = true, refractive = true)
     yield SceneObject(Sphere(centre, radius, pole, equator), surface)
 
   private def plane(e: Element): Result[SceneObject] =
@@ -169,7 +204,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
         case (None, Some(d))    => Right(Plane.at(normal, d))
         case (Some(_), Some(_)) => e.fail("give either a <point> or a distance attribute, not both")
         case (None, None)       => e.fail("needs a <point> or a distance attribute")
-      surface <- surface(e, children, texturable = false)
+      surface <- surface(e, children, texturable = false, refractive = false)
     yield SceneObject(plane, surface)
 
   private def triangle(e: Element): Result[SceneObject] =
@@ -188,35 +223,74 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       _ <-
         if Triangle.isProper(t0, t1, t2) then Right(())
         else e.fail(s"the corners $t0, $t1, $t2 are collinear")
-      surface <- surface(e, children, texturable = true)
+      surface <- surface(e, children, texturable = true, refractive = false)
     yield SceneObject(Triangle(t0, t1, t2), surface)
 
   private def surface(
       owner: Element,
       siblings: List[Element],
-      texturable: Boolean
+      texturable: Boolean,
+      refractive: Boolean
   ): Result[Surface] =
     atMostOne(owner, siblings, "surface").flatMap {
       case None    => Right(Surface())
       case Some(e) =>
         for
-          children <- contents(e, Set("diffuse", "reflection"), Set("colour", "color", "texture"))
-          diffuse  <- number(e, "diffuse").map(_.getOrElse(1.0))
-          _        <-
-            if diffuse >= 0 then Right(())
-            else e.fail(s"attribute diffuse must be at least 0, got ${show(diffuse)}")
-          reflection <- number(e, "reflection").map(_.getOrElse(0.0))
+          children   <- contents(e, SurfaceAttributes, Set("colour", "color", "texture"))
+          diffuse    <- bounded(e, "diffuse", 1.0, atLeastZero)
+          reflection <- bounded(e, "reflection", 0.0, zeroToOne)
+          phong      <- bounded(e, "phong", 0.0, atLeastZero)
+          phongSize  <- positive(e, "phong-size", Surface.DefaultPhongSize)
+          specular   <- bounded(e, "specular", 0.0, atLeastZero)
+          roughness  <- bounded(e, "roughness", Surface.DefaultRoughness, aboveZeroToOne)
+          transmit   <- bounded(e, "transmit", 0.0, zeroToOne)
+          ior        <- positive(e, "ior", 1.0)
           _          <-
-            if reflection >= 0 && reflection <= 1 then Right(())
-            else e.fail(s"attribute reflection must be from 0 to 1, got ${show(reflection)}")
+            if refractive || e.attribute("ior").isEmpty then Right(())
+            else e.fail(s"attribute ior is allowed on spheres only, not <${owner.name}>")
           colour <- atMostOne(e, children, "colour", "color").flatMap(
             _.fold(Right(Colour.White))(colour(_, 1))
           )
           texture <- atMostOne(e, children, "texture").flatMap(
             traverseOption(_)(texture(_, owner, texturable))
           )
-        yield Surface(diffuse, reflection, texture.fold(Pigment.Solid(colour))(Pigment.Textured(_)))
+        yield Surface(
+          diffuse,
+          reflection,
+          texture.fold(Pigment.Solid(colour))(Pigment.Textured(_)),
+          phong,
+          phongSize,
+          specular,
+          roughness,
+          transmit,
+          ior
+        )
     }
+
+  private val SurfaceAttributes =
+    Set("diffuse", "reflection", "phong", "phong-size", "specular", "roughness", "transmit", "ior")
+
+  /** A range rule for a number: a test and the words that describe it in errors. */
+  private final case class Range(accepts: Double => Boolean, describe: String)
+  private val atLeastZero    = Range(_ >= 0, "at least 0")
+  private val zeroToOne      = Range(v => v >= 0 && v <= 1, "from 0 to 1")
+  private val aboveZeroToOne = Range(v => v > 0 && v <= 1, "greater than 0 and at most 1")
+
+  /** Optional attribute `key` of `e`, `default` when absent, else within `range`. */
+  private def bounded(e: Element, key: String, default: Double, range: Range): Result[Double] =
+    number(e, key).flatMap {
+      case None                        => Right(default)
+      case Some(v) if range.accepts(v) => Right(v)
+      case Some(v) => e.fail(s"attribute $key must be ${range.describe}, got ${show(v)}")
+    }
+
+  /** Optional attribute `key` of `e`: `true` or `false`, `default` when absent. */
+  private def boolean(e: Element, key: String, default: Boolean): Result[Boolean] =
+    e.attribute(key) match
+      case None          => Right(default)
+      case Some("true")  => Right(true)
+      case Some("false") => Right(false)
+      case Some(other)   => e.fail(s"attribute $key must be true or false, got '$other'")
 
   private def texture(e: Element, owner: Element, texturable: Boolean): Result[Texture] =
     for

@@ -1,5 +1,6 @@
 package tracer.render
 
+import tracer.image.Encoding
 import tracer.scene.{Camera, Scene}
 
 /** How shading is done: the full Whitted model, or the quick preview of `-q`. */
@@ -20,6 +21,7 @@ enum ShadingMode:
   * @param depth     the most reflections a ray may make, ≥ 0
   * @param mode      full or quick shading
   * @param samples   n, for n × n samples a pixel (antialiasing), 1..16
+  * @param encoding  how a pixel's colour is encoded for the file (`-g`)
   */
 final case class CameraConfig(
     zoom: Double,
@@ -29,7 +31,8 @@ final case class CameraConfig(
     rows: Int,
     depth: Int = CameraConfig.DefaultDepth,
     mode: ShadingMode = ShadingMode.Full,
-    samples: Int = 1
+    samples: Int = 1,
+    encoding: Encoding = Encoding.Linear
 ):
   require(zoom > 0 && width > 0 && height > 0, "zoom, width and height must be positive")
   require(columns >= 1 && rows >= 1, s"the image must be at least 1×1 pixels, got ${columns}×$rows")

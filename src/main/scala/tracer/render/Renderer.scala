@@ -14,25 +14,30 @@ object Renderer:
 
   /** Renders `scene` as `config` says, on a fixed pool of `threads` threads, one row a task.
     *
-    * The picture depends only on `scene` and `config`, never on `threads`. `onRow` is called once
-    * for every finished row, from the worker threads (for progress reports).
+    * The picture depends only on `scene` and `config`, never on `threads`. `band` chooses the
+    * rows to render (the `-R a:b` option), by default all: the result is those rows of the whole
+    * picture, pixel for pixel. `onRow` is called once for every finished row, from the worker
+    * threads (for progress reports).
     */
   def render(
       scene: Scene,
       config: CameraConfig,
       threads: Int = defaultThreads,
-      onRow: () => Unit = () => ()
+      onRow: () => Unit = () => (),
+      band: Range = Range(0, Int.MaxValue)
   ): Bitmap =
     require(threads >= 1, s"threads must be at least 1, got $threads")
+    val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
+    require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
     val frame = Frame(scene, config)
     val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
     try
       given ExecutionContext = ExecutionContext.fromExecutorService(pool)
       // A queue of many small row tasks keeps every thread busy however uneven the rows are.
-      val rows = Future.traverse(0 until config.rows) { y =>
+      val done = Future.traverse(rows) { y =>
         Future(RowFailure.guard { val row = frame.row(y); onRow(); row })
       }
-      Bitmap.stack(Await.result(rows, Duration.Inf))
+      Bitmap.stack(Await.result(done, Duration.Inf))
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow()
 
@@ -56,7 +61,7 @@ object Renderer:
     /** Row `y` of the picture, as a bitmap one pixel high. */
     def row(y: Int): Bitmap =
       val shading = Shading(world, config.mode)
-      Bitmap.tabulate(config.columns, 1)((x, _) => pixel(shading, x, y))
+      Bitmap.tabulate(config.columns, 1)((x, _) => config.encoding.encode(pixel(shading, x, y)))
 
     /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
     private def pixel(shading: Shading, x: Int, y: Int): Colour =

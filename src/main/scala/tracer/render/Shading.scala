@@ -3,67 +3,148 @@ package tracer.render
 import tracer.geometry.{Hit, Ray, Shape}
 import tracer.image.Colour
 import tracer.math.Vec3
-import tracer.scene.Pigment
+import tracer.scene.{Pigment, Surface}
 
-/** The colour a ray brings back from the world (rendering.md, Colour of a hit).
+/** The colour a ray brings back from the world (docs/rendering.md, Colour of a hit): the course's
+  * Whitted model, with version 2's highlights, transmission and area lights as POV-Ray 3.7 adds
+  * them. A surface without version 2 attributes shades exactly as version 1.
   *
   * Not thread-safe: it keeps scratch space for its queries, so each render task makes its own.
   */
 final class Shading(world: World, mode: ShadingMode):
-  private val stack = world.newStack()
+  private val stack   = world.newStack()
+  private val shadows = Shadows(world, stack)
 
-  /** The colour seen along `ray`, allowing `depth` more reflections. */
-  def colour(ray: Ray, depth: Int): Colour =
+  /** The colour seen along `ray`, allowing `depth` more reflections or refractions. */
+  def colour(ray: Ray, depth: Int): Colour = trace(ray, depth, Nil)
+
+  /** The colour seen along `ray` from inside the objects `insides` (innermost first). */
+  private def trace(ray: Ray, depth: Int, insides: List[Int]): Colour =
     val i = world.nearest(ray, stack)
     if i < 0 then world.background
     else
-      val shape = world.shape(i)
-      val hit   = Shape.hitAt(shape, ray, Shape.distance(shape, ray))
+      val shape  = world.shape(i)
+      val hit    = Shape.hitAt(shape, ray, Shape.distance(shape, ray))
+      val normal = Shape.shadingNormal(shape, hit, ray)
       mode match
-        case ShadingMode.Quick => pigment(i, hit) * Math.abs(hit.normal.dot(ray.direction))
+        case ShadingMode.Quick => pigment(i, hit) * Math.abs(normal.dot(ray.direction))
         case ShadingMode.Full  =>
           // Equations 40 and 43: shadow and reflected rays start just off the surface, on the
-          // side the ray came from.
-          val s0 = hit.point + hit.normal * Shading.Epsilon
-          lit(i, hit, s0) + reflected(i, hit, s0, ray, depth)
+          // side the ray came from (the geometric side, even where a smooth normal leans).
+          val s0      = hit.point + hit.normal * Shading.Epsilon
+          val surface = world.surface(i)
+          lit(surface, pigment(i, hit), normal, normal != hit.normal, s0, ray) +
+            beyond(i, surface, hit, normal, s0, ray, depth, insides)
 
-  /** The sum over the lights visible from S0 of C ⊙ colour(L) · diffuse · |rn · Sd|.
+  /** The light the surface sends back from every light that reaches S0: diffuse
+    * C ⊙ colour(L) · diffuse · (1 − transmit) · |rn · Sd| and white highlights colour(L) ·
+    * (phong + specular terms), each light scaled by the share of it that reaches S0.
     *
-    * Perf: `lit` and `reflected` are inline, so the hit's values stay in one compiled method and
-    * fewer of them escape to the heap (RenderBench: 11.0 → 9.5 MB a frame; docs/performance.md, step 9).
+    * `leaning` says that `normal` is a smooth mesh's interpolated normal, not the face's own.
+    *
+    * Perf: inline, with the channels summed in locals: no Colour or closure per light, and the
+    * hit's values stay in one compiled method (RenderBench; docs/performance.md, steps 2 and 9).
     */
-  private inline def lit(i: Int, hit: Hit, s0: Vec3): Colour =
-    val surface = world.surface(i)
-    val colour  = pigment(i, hit)
-    // Perf: a while loop summing channels in locals: no Colour or closure per light
-    // (RenderBench.few: see docs/performance.md, step 2).
-    var r = 0.0
-    var g = 0.0
-    var b = 0.0
-    var k = 0
+  private inline def lit(
+      surface: Surface,
+      colour: Colour,
+      normal: Vec3,
+      leaning: Boolean,
+      s0: Vec3,
+      ray: Ray
+  ) =
+    val diffuse  = surface.diffuse * (1 - surface.transmit)
+    val oneSided = leaning || surface.transmit > 0
+    var r        = 0.0
+    var g        = 0.0
+    var b        = 0.0
+    var k        = 0
     while k < world.lights.length do
       val light   = world.lights(k)
       val toLight = light.location - s0
       val reach   = toLight.length
       // Equation 41; a light exactly at S0 shines straight along the normal.
-      val sd = if reach > 0 then toLight / reach else hit.normal
-      if !world.occluded(Ray(s0, sd), reach, stack) then
-        val cos = Math.abs(hit.normal.dot(sd))
-        r += colour.r * light.colour.r * surface.diffuse * cos
-        g += colour.g * light.colour.g * surface.diffuse * cos
-        b += colour.b * light.colour.b * surface.diffuse * cos
+      val sd  = if reach > 0 then toLight / reach else normal
+      val cos = normal.dot(sd)
+      // POV-Ray ignores a light behind the shading normal. A flat opaque surface shadows such a
+      // point light by itself; transmitting surfaces, smooth normals and area lights (lit from
+      // off-centre sub-lights) need the rule said out loud.
+      val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
+      if !behind then
+        val share = light.area match
+          case None       => shadows.point(s0, sd, reach)
+          case Some(area) => shadows.area(s0, light.location, area)
+        if share > 0 then
+          val lr     = light.colour.r * share
+          val lg     = light.colour.g * share
+          val lb     = light.colour.b * share
+          val facing = Math.abs(cos)
+          r += colour.r * lr * diffuse * facing
+          g += colour.g * lg * diffuse * facing
+          b += colour.b * lb * diffuse * facing
+          if surface.highlighted && cos >= Shading.FarSide then
+            val h = Shading.highlight(surface, normal, ray.direction, sd)
+            r += lr * h
+            g += lg * h
+            b += lb * h
       k += 1
     Colour(r, g, b)
 
-  /** reflection · colour(reflected ray, depth − 1), or black when the surface is no mirror or the
-    * depth is spent (equations 43–44).
+  /** What the surface passes on from further rays: the mirror image, and through a transmitting
+    * surface the light from behind it (or, past the critical angle, the internal reflection).
     */
-  private inline def reflected(i: Int, hit: Hit, s0: Vec3, ray: Ray, depth: Int): Colour =
-    val reflection = world.surface(i).reflection
-    if reflection <= 0 || depth <= 0 then Colour.Black
+  private inline def beyond(
+      i: Int,
+      surface: Surface,
+      hit: Hit,
+      normal: Vec3,
+      s0: Vec3,
+      ray: Ray,
+      depth: Int,
+      insides: List[Int]
+  ): Colour =
+    if depth <= 0 then Colour.Black
+    else if surface.transmit <= 0 then mirror(surface.reflection, normal, s0, ray, depth, insides)
+    else transmitted(i, surface, hit, normal, s0, ray, depth, insides)
+
+  /** reflection · colour(reflected ray, depth − 1) (equations 43–44), black for no mirror. */
+  private def mirror(
+      reflection: Double,
+      normal: Vec3,
+      s0: Vec3,
+      ray: Ray,
+      depth: Int,
+      insides: List[Int]
+  ): Colour =
+    if reflection <= 0 then Colour.Black
+    else trace(Ray(s0, Refraction.reflect(ray.direction, normal)), depth - 1, insides) * reflection
+
+  /** transmit · colour(ray through the surface) + the mirror term; the ray goes straight on where
+    * the indices match (not counted against the depth, as POV-Ray continues such rays), and is
+    * bent by Heckbert's formula where they differ. Past the critical angle the internal
+    * reflection is added whole, in place of the transmitted and the mirror terms (POV-Ray).
+    */
+  private def transmitted(
+      i: Int,
+      surface: Surface,
+      hit: Hit,
+      normal: Vec3,
+      s0: Vec3,
+      ray: Ray,
+      depth: Int,
+      insides: List[Int]
+  ): Colour =
+    val (eta, beyondInsides) = Refraction.cross(insides, i, world.surface(_).ior)
+    val behind               = hit.point - hit.normal * Shading.Epsilon
+    def through(direction: Vec3, depthBeyond: Int) =
+      trace(Ray(behind, direction), depthBeyond, beyondInsides) * surface.transmit +
+        mirror(surface.reflection, normal, s0, ray, depth, insides)
+    if Math.abs(eta - 1) < Refraction.SameIndex then through(ray.direction, depth)
     else
-      val direction = ray.direction - hit.normal * (2 * hit.normal.dot(ray.direction))
-      colour(Ray(s0, direction), depth - 1) * reflection
+      Refraction.refract(ray.direction, normal, eta) match
+        case Some(direction) => through(direction, depth - 1)
+        case None            =>
+          trace(Ray(s0, Refraction.reflect(ray.direction, normal)), depth - 1, insides)
 
   /** The surface colour C at the hit: the texel there, or the plain colour. */
   private def pigment(i: Int, hit: Hit): Colour = world.surface(i).pigment match
@@ -72,7 +153,34 @@ final class Shading(world: World, mode: ShadingMode):
       val uv = Shape.surfaceCoordinates(world.shape(i), hit.point)
       texture.colourAt(uv.u, uv.v)
 
-/** Constants of the shading model. */
+/** Constants and pure terms of the shading model. */
 object Shading:
   /** ε, the offset of shadow and reflected ray origins from the surface (world units). */
   val Epsilon: Double = 1e-4
+
+  /** rn · Sd below this puts a light behind the surface (POV-Ray's EPSILON). */
+  val FarSide: Double = 1e-10
+
+  /** The highlight a light in unit direction `toLight` puts on a surface with unit normal
+    * `normal` (facing the viewer) seen along unit `direction`, per unit of light colour:
+    * phong · (R · Sd)^phong-size with R the mirror direction of the view (POV-Ray keeps it only
+    * above 0.0008 when phong-size ≥ 60), plus specular · (rn · H)^(1/roughness) with H the
+    * half-way vector between the light and the eye (POV-Ray's `ComputePhongColour` and
+    * `ComputeSpecularColour`).
+    */
+  def highlight(surface: Surface, normal: Vec3, direction: Vec3, toLight: Vec3): Double =
+    val phong =
+      if surface.phong <= 0 then 0.0
+      else
+        val cos = Refraction.reflect(direction, normal).dot(toLight)
+        if cos > 0 && (surface.phongSize < 60 || cos > 0.0008) then
+          surface.phong * Math.pow(cos, surface.phongSize)
+        else 0.0
+    val specular =
+      if surface.specular <= 0 then 0.0
+      else
+        val halfway = (toLight - direction) * 0.5
+        val length  = halfway.length
+        val cos     = if length > 0 then halfway.dot(normal) / length else 0.0
+        if cos > 0 then surface.specular * Math.pow(cos, 1 / surface.roughness) else 0.0
+    phong + specular

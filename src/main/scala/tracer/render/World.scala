@@ -19,6 +19,9 @@ final class World(scene: Scene):
   /** The background colour. */
   val background = scene.background
 
+  /** True when some surface lets light through, so shadow rays must weigh what they cross. */
+  val transmits: Boolean = surfaces.exists(_.transmit > 0)
+
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)
 

@@ -56,27 +56,85 @@ object Camera:
   /** H when the scene gives none. */
   val DefaultHeight: Double = 0.75
 
-/** A point light: no size, invisible, no fall-off with distance.
+/** A light: a point, or the centre of an area light; invisible, no fall-off with distance.
   *
-  * @param location where it is (L0)
+  * @param location where it is (L0); for an area light, the centre of its grid
   * @param colour   its intensity per channel, ≥ 0 and possibly above 1
+  * @param area     the grid of sub-lights that soften its shadows, if it is an area light
   */
-final case class Light(location: Vec3, colour: Colour = Colour.White)
+final case class Light(
+    location: Vec3,
+    colour: Colour = Colour.White,
+    area: Option[AreaLight] = None
+)
+
+/** The regular grid of sub-lights of an area light (scene-format-v2, Area lights), as POV-Ray's
+  * `area_light a, b, samplesA, samplesB` without jitter: sub-light (i, j) sits at
+  * location + a·(i/(samplesA − 1) − ½) + b·(j/(samplesB − 1) − ½), an axis with one sample adding
+  * nothing. Lighting directions still point at the centre; only shadows come from the grid.
+  *
+  * @param a        the first axis, the grid's full extent along it
+  * @param b        the second axis, not parallel to `a`
+  * @param samplesA sub-lights along `a`, 1..64
+  * @param samplesB sub-lights along `b`, 1..64
+  */
+final case class AreaLight(a: Vec3, b: Vec3, samplesA: Int, samplesB: Int):
+  require(
+    samplesA >= 1 && samplesA <= AreaLight.MaxSamples &&
+      samplesB >= 1 && samplesB <= AreaLight.MaxSamples,
+    s"an area light has 1 to ${AreaLight.MaxSamples} samples along each axis, got $samplesA × $samplesB"
+  )
+  require(a.cross(b).normalised.isDefined, s"the area light's axes $a and $b are zero or parallel")
+
+  /** Sub-light (i, j)'s offset from the light's centre. */
+  def offset(i: Int, j: Int): Vec3 =
+    AreaLight.along(a, i, samplesA) + AreaLight.along(b, j, samplesB)
+
+/** Limits and helpers of [[AreaLight]]. */
+object AreaLight:
+  /** The most sub-lights along one axis. */
+  val MaxSamples: Int = 64
+
+  private def along(axis: Vec3, i: Int, samples: Int): Vec3 =
+    if samples > 1 then axis * (i.toDouble / (samples - 1) - 0.5) else Vec3.Zero
 
 /** A shape with the surface that colours it. */
 final case class SceneObject(shape: Shape, surface: Surface = Surface())
 
-/** How a surface reflects light.
+/** How a surface reflects and lets through light (scene-format.md; the last six parameters are
+  * version 2, each off by default, each rendering as POV-Ray's finish of the same name).
   *
   * @param diffuse    the diffuse coefficient, ≥ 0
   * @param reflection the mirror coefficient, 0..1
   * @param pigment    the colour of the surface, plain or from a texture
+  * @param phong      the Phong highlight's strength, ≥ 0
+  * @param phongSize  the Phong exponent, > 0: larger is a smaller, sharper highlight
+  * @param specular   the Blinn highlight's strength, ≥ 0
+  * @param roughness  the Blinn highlight's roughness, in (0, 1]: smaller is sharper
+  * @param transmit   the share of light let through, 0..1
+  * @param ior        the index of refraction inside (spheres only), > 0
   */
 final case class Surface(
     diffuse: Double = 1.0,
     reflection: Double = 0.0,
-    pigment: Pigment = Pigment.Solid(Colour.White)
-)
+    pigment: Pigment = Pigment.Solid(Colour.White),
+    phong: Double = 0.0,
+    phongSize: Double = Surface.DefaultPhongSize,
+    specular: Double = 0.0,
+    roughness: Double = Surface.DefaultRoughness,
+    transmit: Double = 0.0,
+    ior: Double = 1.0
+):
+  /** True when the surface has a highlight (phong or specular). */
+  def highlighted: Boolean = phong > 0 || specular > 0
+
+/** The defaults of [[Surface]]'s version 2 parameters. */
+object Surface:
+  /** POV-Ray's default `phong_size`. */
+  val DefaultPhongSize: Double = 40.0
+
+  /** POV-Ray's default `roughness`. */
+  val DefaultRoughness: Double = 0.05
 
 /** Where a surface's own colour comes from. */
 enum Pigment:

@@ -28,11 +28,34 @@ class ObjReaderSuite extends munit.FunSuite:
       mesh(square + "f 1/1 2/2 3/3").triangles,
       Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2))))
     )
-    assertEquals(mesh(square + "f 1//1 2//1 3//1").triangles, Vector(ObjTriangle(p0, p1, p2, None)))
+    val n = Vec3(0, 0, -1)
+    assertEquals(
+      mesh(square + "f 1//1 2//1 3//1").triangles,
+      Vector(ObjTriangle(p0, p1, p2, None, Some((n, n, n))))
+    )
     assertEquals(
       mesh(square + "f 1/1/1 2/2/1 3/3/1").triangles,
-      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2))))
+      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2)), Some((n, n, n))))
     )
+
+  test("normals are kept as written, per corner, only when every corner of the face has one"):
+    val normals = "vn 1 0 0\nvn 0 2 0\nvn 0 0 3\n"
+    assertEquals(
+      mesh(square + normals + "f 1//2 2//3 3//4").triangles.map(_.normals),
+      Vector(Some((Vec3(1, 0, 0), Vec3(0, 2, 0), Vec3(0, 0, 3))))
+    )
+    assertEquals(mesh(square + normals + "f 1//2 2 3//4").triangles.map(_.normals), Vector(None))
+    assertEquals(
+      mesh(square + normals + "f 1//-1 2//-2 3//-3 4//-4").triangles.map(_.normals),
+      Vector(
+        Some((Vec3(0, 0, 3), Vec3(0, 2, 0), Vec3(1, 0, 0))),
+        Some((Vec3(0, 0, 3), Vec3(1, 0, 0), Vec3(0, 0, -1)))
+      )
+    )
+
+  test("a normal index out of range, or a short vn line, is an error naming the line"):
+    assertError(square + "f 1//1 2//1 3//2", "line 10", "normal index 2 is out of range")
+    assertError(square + "vn 1 0\n", "line 10", "a normal needs x, y and z")
 
   test("negative indices count back from the latest vertex"):
     assertEquals(
