@@ -136,3 +136,42 @@ class MeshSuite extends munit.FunSuite with Approx:
     assertEquals(loaded.map(_.objects.length), Right(2))
     Files.delete(dir.resolve("models/q.obj")); Files.delete(dir.resolve("models"));
     Files.delete(dir)
+
+  private val bent = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1\nvn 1 0 -1\nvn 0 3 -3\n"
+
+  test("smooth=\"true\" keeps the vn normals, turned by rotate only and normalised"):
+    val placed = scene(
+      """<mesh file="m.obj" smooth="true" scale="3"><rotate x="0" y="90" z="0"/><translate x="5" y="0" z="0"/></mesh>""",
+      bent + "f 1//1 2//2 3//3"
+    )
+    val t    = placed.objects.head.shape.asInstanceOf[Triangle]
+    val half = Math.sqrt(0.5)
+    // Ry(90) takes (x, y, z) to (z, y, −x).
+    val (n0, n1, n2) = t.cornerNormals.getOrElse(fail("no normals"))
+    assertVecClose(n0, Vec3(-1, 0, 0), 1e-12)
+    assertVecClose(n1, Vec3(-half, 0, -half), 1e-12)
+    assertVecClose(n2, Vec3(-half, half, 0), 1e-12)
+
+  test("without smooth, or on a face lacking a normal at a corner, a mesh face stays flat"):
+    val flat = scene("""<mesh file="m.obj"/>""", bent + "f 1//1 2//2 3//3")
+    assertEquals(flat.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+    val partly = scene("""<mesh file="m.obj" smooth="true"/>""", bent + "f 1//1 2 3//3")
+    assertEquals(partly.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+    val explicit = scene("""<mesh file="m.obj" smooth="false"/>""", bent + "f 1//1 2//2 3//3")
+    assertEquals(explicit.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+
+  test("a smooth face shades with its corners' normals blended by barycentric weights"):
+    import tracer.geometry.{Hit, Ray, Shape}
+    val t =
+      scene("""<mesh file="m.obj" smooth="true"/>""", bent + "f 1//1 2//2 3//3").objects.head.shape
+    val ray         = Ray(Vec3(0.25, 0.25, -1), Vec3.UnitZ)
+    def at(p: Vec3) = Shape.shadingNormal(t, Hit(1, p, Vec3(0, 0, -1)), ray)
+    val half        = Math.sqrt(0.5)
+    assertVecClose(at(Vec3(0, 0, 0)), Vec3(0, 0, -1), 1e-12)
+    assertVecClose(at(Vec3(1, 0, 0)), Vec3(half, 0, -half), 1e-12)
+    // The centroid: the mean of the three unit normals, normalised.
+    val mean = (Vec3(0, 0, -1) + Vec3(half, 0, -half) + Vec3(0, half, -half)) / 3
+    assertVecClose(at(Vec3(1.0 / 3, 1.0 / 3, 0)), mean / mean.length, 1e-12)
+    // Seen from the other side, the shading normal turns to face the ray, like the geometric one.
+    val back = Ray(Vec3(0.25, 0.25, 1), -Vec3.UnitZ)
+    assertVecClose(Shape.shadingNormal(t, Hit(1, Vec3.Zero, Vec3.UnitZ), back), Vec3.UnitZ, 1e-12)

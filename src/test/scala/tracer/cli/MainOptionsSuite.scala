@@ -1,0 +1,131 @@
+package tracer.cli
+
+import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
+import java.nio.charset.StandardCharsets.UTF_8
+import java.nio.file.{Files, Path}
+import tracer.image.{Bitmap, Encoding}
+import tracer.testkit.Images
+
+/** The options beyond the course text, run in-process: `-g`, `-R`, `-i` and `--version`. */
+class MainOptionsSuite extends munit.FunSuite with Images:
+
+  /** What one run did. */
+  final case class Run(status: Int, out: String, err: String)
+
+  private val dir = FunFixture[Path](
+    _ => Files.createTempDirectory("tracer-options"),
+    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+  )
+
+  private val scenes = Path.of("scenes").toAbsolutePath
+
+  private def run(cwd: Path, args: String*)(scene: String = ""): Run =
+    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
+    val status     = Main.run(
+      args,
+      ByteArrayInputStream(scene.getBytes(UTF_8)),
+      PrintStream(out, true),
+      PrintStream(err, true),
+      cwd
+    )
+    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+
+  private def assertFailed(r: Run, status: Int, expected: String*)(using munit.Location): Unit =
+    assertEquals(r.status, status, r.err)
+    assertEquals(r.out, "")
+    assert(r.err.startsWith("tracer: ") && r.err.linesIterator.size == 1, s"stderr: '${r.err}'")
+    expected.foreach(e => assert(r.err.contains(e), s"'${r.err.trim}' does not mention '$e'"))
+
+  private def bytes(p: Path) = Files.readAllBytes(p).toList
+
+  private val simple =
+    """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+      |<light><location x="-3" y="3" z="-5"/><colour r="1.5" g="1.5" b="1.5"/></light>
+      |<sphere radius="1"><centre x="0" y="0" z="0"/><surface phong="0.5"><colour r="1" g="0.5" b="0"/></surface></sphere>
+      |</scene>""".stripMargin
+
+  test("--version prints 'tracer VERSION' and nothing else, with or without OUTPUT"):
+    for args <- List(List("--version"), List("--version", "out.png")) do
+      val r = run(Path.of("."), args*)()
+      assertEquals(r.status, 0)
+      assert(r.out.matches("tracer \\d+\\.\\d+\\.\\d+\n"), r.out)
+      assertEquals(r.err, "")
+
+  for scene <- List("textures.xml", "meshes.xml") do
+    dir.test(
+      s"-i $scene from another directory writes the bytes of stdin in the scene's directory"
+    ): d =>
+      val xml = Files.readString(scenes.resolve(scene))
+      assertEquals(run(scenes, "-x", "64", d.resolve("stdin.png").toString)(xml).status, 0)
+      val r = run(d, "-x", "64", "-i", scenes.resolve(scene).toString, "file.png")()
+      assertEquals(r, Run(0, "", ""))
+      assertEquals(bytes(d.resolve("file.png")), bytes(d.resolve("stdin.png")))
+
+  dir.test("-i resolves a relative FILE against the working directory"): d =>
+    Files.writeString(d.resolve("s.xml"), simple)
+    assertEquals(run(d, "-x", "16", "--input", "s.xml", "o.ppm")().status, 0)
+    assert(Files.exists(d.resolve("o.ppm")))
+
+  dir.test("-i with a missing or unreadable FILE is one line naming it, exit 1, output kept"): d =>
+    Files.writeString(d.resolve("o.ppm"), "old")
+    assertFailed(run(d, "-i", "nowhere.xml", "o.ppm")(), 1, "nowhere.xml", "no such file")
+    Files.createDirectory(d.resolve("folder.xml"))
+    assertFailed(run(d, "-i", "folder.xml", "o.ppm")(), 1, "folder.xml")
+    assertEquals(Files.readString(d.resolve("o.ppm")), "old")
+
+  dir.test("-R a:b writes exactly rows a … b − 1 of the whole picture"): d =>
+    val scene = Files.readString(scenes.resolve("textures.xml"))
+    val whole = (args: Seq[String]) =>
+      assertEquals(run(scenes, (args :+ d.resolve("whole.ppm").toString)*)(scene).status, 0)
+      readImage(d.resolve("whole.ppm"))
+    for options <- List(List("-x", "48"), List("-x", "48", "-a", "3"), List("-x", "48", "-q")) do
+      val all = whole(options)
+      val y   = all.height
+      for (a, b) <- List((0, 1), (0, y), (5, 17), (y - 1, y)) do
+        val out = d.resolve(s"band-$a-$b.ppm").toString
+        val r   = run(scenes, (options ++ List("-R", s"$a:$b", "-p", "3", out))*)(scene)
+        assertEquals(r.status, 0, r.err)
+        val band = readImage(Path.of(out))
+        assertEquals((band.width, band.height), (48, b - a))
+        val expected = Bitmap.tabulate(48, b - a)((x, y) => all(x, y + a))
+        assertEquals(band, expected, s"${options.mkString(" ")} -R $a:$b")
+
+  dir.test("-R bands of a mesh scene stack up to the whole picture"): d =>
+    val scene = Files.readString(scenes.resolve("meshes.xml"))
+    run(scenes, "-x", "40", d.resolve("whole.ppm").toString)(scene)
+    val bands = List((0, 7), (7, 8), (8, 23)).map { (a, b) =>
+      run(scenes, "-x", "40", "--rows", s"$a:$b", d.resolve(s"$a.ppm").toString)(scene)
+      readImage(d.resolve(s"$a.ppm"))
+    }
+    assertEquals(Bitmap.stack(bands), readImage(d.resolve("whole.ppm")))
+
+  dir.test("-R with -t times the band"): d =>
+    val r = run(d, "-x", "40", "-R", "0:2", "-t", "o.ppm")(simple)
+    assert(r.out.matches("Tracetime: \\d+ ms\n"), r.out)
+
+  dir.test("bad -R values are usage errors, exit 2, old output kept"): d =>
+    Files.writeString(d.resolve("o.ppm"), "old")
+    for value <- List("5:5", "3:2", "-1:2", "a:b", "1", "1:2:3", ":4", "2.5:4") do
+      assertFailed(run(d, "-x", "40", "-R", value, "o.ppm")(simple), 2, "-R")
+    // b beyond the picture's Y (30 rows here) is known only once the scene is read.
+    assertFailed(run(d, "-x", "40", "-R", "0:31", "o.ppm")(simple), 2, "-R 0:31", "30 rows")
+    assertEquals(Files.readString(d.resolve("o.ppm")), "old")
+
+  dir.test("-g 1 is byte-identical to no -g; -g srgb and -g 2.2 encode every channel"): d =>
+    run(d, "-x", "40", "plain.ppm")(simple)
+    run(d, "-x", "40", "-g", "1", "g1.ppm")(simple)
+    assertEquals(bytes(d.resolve("g1.ppm")), bytes(d.resolve("plain.ppm")))
+    val plain = readImage(d.resolve("plain.ppm"))
+    for (option, encoding) <- List("srgb" -> Encoding.Srgb, "2.2" -> Encoding.Power(2.2)) do
+      assertEquals(run(d, "-x", "40", "-g", option, "g.ppm")(simple).status, 0)
+      val encoded = readImage(d.resolve("g.ppm"))
+      // Encoding the linear picture's rounded bytes again strays from encoding the exact colours
+      // by less than two levels where the linear level is 32 or more (dark levels stretch).
+      for x <- 0 until 40; y <- 0 until 30; c <- 0 until 3 if plain.sample(x, y, c) >= 32 do
+        val expected = 255 * encoding.encode(plain.sample(x, y, c) / 255.0)
+        assert(Math.abs(encoded.sample(x, y, c) - expected) < 2, s"-g $option at ($x, $y)")
+      assertNotEquals(encoded, plain)
+
+  dir.test("bad -g values are usage errors, exit 2"): d =>
+    for value <- List("0", "-1", "abc", "", "NaN") do
+      assertFailed(run(d, "-x", "8", "-g", value, "o.ppm")(simple), 2, "-g")

@@ -1,0 +1,228 @@
+package tracer.render
+
+import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.image.{Bitmap, Colour, Encoding}
+import tracer.math.Vec3
+import tracer.scene.*
+import tracer.testkit.Approx
+import tracer.testkit.Scenes.{camera, matte}
+
+/** The terms version 2 adds to shading (docs/rendering.md), checked on known values and on tiny
+  * scenes whose pixels follow from the formulas: highlights, refraction, total internal
+  * reflection, shadows through transmitting surfaces, area lights and output encoding.
+  */
+class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testkit.Images:
+
+  private def render(scene: Scene, x: Int = 1, y: Int = 1, depth: Int = 5, samples: Int = 1) =
+    Renderer.render(scene, CameraConfig(1, 1, 0.75, x, y, depth, samples = samples), threads = 2)
+
+  private def samples(b: Bitmap, x: Int = 0, y: Int = 0) = (0 until 3).map(b.sample(x, y, _)).toList
+  private def grey(level: Double)                        = List.fill(3)(Colour.quantise(level, 255))
+
+  // A wall z = 0 facing the camera on −z; the single pixel's ray hits the origin head-on.
+  private val wall                      = Plane.at(-Vec3.UnitZ, 0)
+  private val facing                    = Vec3(0, 0, -1)
+  private val view                      = Vec3(0, 0, 1)
+  private def at(degrees: Double): Vec3 = // a unit direction on the camera's side, tilted in x
+    Vec3(Math.sin(Math.toRadians(degrees)), 0, -Math.cos(Math.toRadians(degrees)))
+
+  test("phong: phong · cos^phong-size of the angle between the view's mirror and the light"):
+    val s = Surface(phong = 0.7, phongSize = 10)
+    assertEqualsDouble(Shading.highlight(s, facing, view, facing), 0.7, 1e-12)
+    assertEqualsDouble(
+      Shading.highlight(s, facing, view, at(30)),
+      0.7 * Math.pow(Math.cos(Math.toRadians(30)), 10),
+      1e-12
+    )
+    assertEqualsDouble(Shading.highlight(s, facing, view, at(90)), 0.0, 1e-12)
+
+  test("phong-size of 60 or more drops a highlight at cos 0.0008 or below, as POV-Ray does"):
+    val angle = Math.toDegrees(Math.acos(0.0007))
+    assertEquals(
+      Shading.highlight(Surface(phong = 1, phongSize = 60), facing, view, at(angle)),
+      0.0
+    )
+    assert(Shading.highlight(Surface(phong = 1, phongSize = 1), facing, view, at(angle)) > 0)
+
+  test(
+    "specular: specular · cos^(1/roughness) of the angle between the normal and the half-way vector"
+  ):
+    val s = Surface(specular = 0.5, roughness = 0.1)
+    assertEqualsDouble(Shading.highlight(s, facing, view, facing), 0.5, 1e-12)
+    // The half-way vector between the eye and a light 40° off lies 20° off the normal.
+    assertEqualsDouble(
+      Shading.highlight(s, facing, view, at(40)),
+      0.5 * Math.pow(Math.cos(Math.toRadians(20)), 10),
+      1e-12
+    )
+
+  test("phong-size and roughness alone change nothing"):
+    val plain = Surface(phongSize = 5, roughness = 0.5)
+    assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)
+
+  test("a highlight adds the light's colour, untinted, on top of the diffuse term"):
+    val light = Light(Vec3(0, 0, -10), Colour(0.5, 0.5, 0.25))
+    val red   = Surface(0.5, 0, Pigment.Solid(Colour(1, 0, 0)), phong = 0.4, specular = 0.2)
+    val b     = render(Scene(camera, lights = List(light), objects = List(SceneObject(wall, red))))
+    // Diffuse C ⊙ L · 0.5 = (0.25, 0, 0); highlights (0.4 + 0.2) · L = (0.3, 0.3, 0.15).
+    assertEquals(samples(b), List(0.55, 0.3, 0.15).map(Colour.quantise(_, 255)))
+
+  test("a highlight peaks where the normal halves the angle between the eye and the light"):
+    val light = Light(Vec3(3, 0, -5))
+    val shiny = Surface(diffuse = 0, phong = 1, phongSize = 200)
+    val scene =
+      Scene(camera, lights = List(light), objects = List(SceneObject(Sphere(Vec3.Zero, 1), shiny)))
+    val config = CameraConfig(1, 1, 0.75, 81, 61)
+    val image  = Renderer.render(scene, config)
+    val (x, y) =
+      (for x <- 0 until 81; y <- 0 until 61 yield (x, y)).maxBy((x, y) => image.sample(x, y, 0))
+    // The peak point P on the sphere: its normal P bisects the directions to the eye and light.
+    val peak = Iterator
+      .iterate(Vec3(0, 0, -1)) { p =>
+        ((camera.location - p) / (camera.location - p).length + (light.location - p) / (light.location - p).length)
+          .normalisedOr(p)
+      }
+      .drop(200)
+      .next()
+    val toPeak  = (peak - camera.location) / (peak - camera.location).length
+    val project = Projection(camera, config)
+    val nearest = (for x <- 0 until 81; y <- 0 until 61
+    yield (x, y)).maxBy((x, y) => project.ray(x + 0.5, y + 0.5).direction.dot(toPeak))
+    assertEquals((x, y), nearest)
+
+  test("Snell's law: sin θ₂ = η sin θ₁, and a ray along the normal goes straight on"):
+    val eta = 1 / 1.5
+    val in  = Vec3(Math.sin(0.6), 0, Math.cos(0.6))
+    val out = Refraction.refract(in, facing, eta).getOrElse(fail("no refraction"))
+    assertEqualsDouble(out.length, 1.0, 1e-12)
+    assertEqualsDouble(out.x, eta * Math.sin(0.6), 1e-12)
+    assert(out.z > 0)
+    assertVecClose(Refraction.refract(view, facing, eta).get, view, 1e-15)
+
+  test("total internal reflection: no refracted ray past the critical angle, one just before it"):
+    val critical            = Math.asin(1 / 1.5) // leaving glass (η = 1.5)
+    def from(angle: Double) = Vec3(Math.sin(angle), 0, Math.cos(angle))
+    assertEquals(Refraction.refract(from(critical + 1e-6), facing, 1.5), None)
+    assert(Refraction.refract(from(critical - 1e-6), facing, 1.5).isDefined)
+
+  test("entering, nesting, leaving: the ratio of indices follows the objects the ray is inside"):
+    val ior = Map(0 -> 1.5, 1 -> 1.2, 2 -> 1.0)
+    assertEquals(Refraction.cross(Nil, 0, ior), (1 / 1.5, List(0)))
+    assertEquals(Refraction.cross(List(0), 1, ior), (1.5 / 1.2, List(1, 0)))
+    assertEquals(Refraction.cross(List(1, 0), 1, ior), (1.2 / 1.5, List(0)))
+    assertEquals(Refraction.cross(List(0), 0, ior), (1.5, Nil))
+    assertEquals(Refraction.cross(List(1, 0), 0, ior), (1.0, List(1))) // leaving an overlap
+
+  // A clear glass ball in front of a white wall lit from behind the eye: the central ray passes
+  // straight through the ball's centre (it meets both surfaces along the normal).
+  private val behindEye                           = Light(Vec3(0, 0, -10))
+  private val farWall                             = matte(Plane.at(-Vec3.UnitZ, -3))
+  private def ball(transmit: Double, ior: Double) =
+    SceneObject(Sphere(Vec3.Zero, 1), Surface(diffuse = 0, transmit = transmit, ior = ior))
+
+  test("through a sphere's centre: transmit² of the wall, itself in a shadow dimmed by transmit²"):
+    val scene = Scene(camera, lights = List(behindEye), objects = List(farWall, ball(0.8, 1.5)))
+    // Two surfaces each way: 0.8 · 0.8 of the wall, lit through the ball at 0.8 · 0.8.
+    assertEquals(samples(render(scene)), grey(0.8 * 0.8 * 0.8 * 0.8))
+
+  test("refraction bends: a ball of index 1.5 shows a different part of the world than index 1"):
+    val stripe =
+      matte(Triangle(Vec3(-0.3, -5, -2.9), Vec3(0.3, -5, -2.9), Vec3(0, 5, -2.9)), Colour(1, 0, 0))
+    def image(ior: Double) = render(
+      Scene(camera, lights = List(behindEye), objects = List(farWall, stripe, ball(1, ior))),
+      x = 40,
+      y = 30
+    )
+    assertNotEquals(image(1.5), image(1.0))
+
+  test("transmitted rays count against the depth where they bend, not where they go straight on"):
+    val scene = (ior: Double) =>
+      Scene(camera, lights = List(behindEye), objects = List(farWall, ball(0.8, ior)))
+    // Index 1: two straight crossings are free, so depth 0 still forbids them (POV-Ray's rule).
+    assertEquals(samples(render(scene(1.0), depth = 0)), grey(0))
+    assertEquals(samples(render(scene(1.0), depth = 1)), grey(0.8 * 0.8 * 0.8 * 0.8))
+    // Index 1.5: each of the two bends uses one level.
+    assertEquals(samples(render(scene(1.5), depth = 1)), grey(0))
+    assertEquals(samples(render(scene(1.5), depth = 2)), grey(0.8 * 0.8 * 0.8 * 0.8))
+
+  test("a transmitting surface keeps (1 − transmit) of its diffuse light"):
+    val light = Light(Vec3(0, 0, -10))
+    val glass = SceneObject(wall, Surface(diffuse = 0.8, transmit = 0.25))
+    assertEquals(
+      samples(render(Scene(camera, lights = List(light), objects = List(glass)))),
+      grey(0.6)
+    )
+
+  test("a light behind a transmitting surface does not light it"):
+    val light = Light(Vec3(0, 0, 10))
+    val glass = SceneObject(wall, Surface(diffuse = 1, transmit = 0.5))
+    assertEquals(
+      samples(render(Scene(camera, lights = List(light), objects = List(glass)))),
+      grey(0)
+    )
+
+  // Shadows of a half-plane blocker at height 2 (covering x < 0) under an area light at height 4
+  // with five sub-lights on x = −1 … 1: a floor point at x = p sees sub-light s unless p + s < 0,
+  // so the penumbra runs from x = −1 (umbra) to x = 1 (full light).
+  private val blocker          = matte(Triangle(Vec3(0, 2, -50), Vec3(0, 2, 50), Vec3(-50, 2, 0)))
+  private val area             = AreaLight(Vec3(2, 0, 0), Vec3(0, 0, 1), 5, 1)
+  private def share(x: Double) =
+    val world = World(Scene(camera, objects = List(blocker)))
+    Shadows(world, world.newStack()).area(Vec3(x, 0, 0), Vec3(0, 4, 0), area)
+
+  test("an area light's penumbra spans exactly what the grid's end lights see past the blocker"):
+    assertEquals(share(1.01), 1.0)
+    assertEquals(share(-1.01), 0.0)
+    val inside = List(-0.9, -0.4, 0.1, 0.6, 0.9).map(share)
+    assert(inside.forall(s => s > 0 && s < 1), inside)
+    assertEquals(inside, inside.sorted)
+
+  test("an area light's samples are averaged as POV-Ray's four-corner subdivision weighs them"):
+    // Five sub-lights split as (0..2)(2..4), then (0..1)(1..2)(2..3)(3..4): the weights are
+    // 1/8, 1/4, 1/4, 1/4, 1/8. At x = 0.5 only the sub-light at x = −1 is hidden.
+    assertEqualsDouble(share(0.5 + 1e-9), 1 - 1.0 / 8, 1e-12)
+    // At x = 0.25 the sub-lights at −1 and −0.5 are hidden.
+    assertEqualsDouble(share(0.25 + 1e-9), 1 - 1.0 / 8 - 1.0 / 4, 1e-12)
+
+  test("sub-lights sit on a full regular grid centred on the light"):
+    assertEquals(area.offset(0, 0), Vec3(-1, 0, 0))
+    assertEquals(area.offset(2, 0), Vec3.Zero)
+    assertEquals(area.offset(4, 0), Vec3(1, 0, 0))
+    assertEquals(AreaLight(Vec3(2, 0, 0), Vec3(0, 0, 2), 1, 3).offset(0, 0), Vec3(0, 0, -1))
+
+  test("an area light of one sample is the point light, but for the light-behind rule"):
+    val point = Light(Vec3(-2, 3, -4))
+    val one   = point.copy(area = Some(AreaLight(Vec3(1, 0, 0), Vec3(0, 1, 0), 1, 1)))
+    val objs  = List(matte(Sphere(Vec3.Zero, 1)), matte(Plane.at(Vec3.UnitY, -1)))
+    val size  = (x: Scene) => render(x, x = 40, y = 30)
+    // Just past the sphere's terminator (rn · Sd < 0) S0, ε above the surface, still sees a point
+    // light over the sphere's own curve for up to √(2ε/r) radians: |rn · Sd| lights it a little
+    // (course rule), where the area light's light-behind rule (POV-Ray's) leaves it dark.
+    assertImageClose(
+      size(Scene(camera, lights = List(one), objects = objs)),
+      size(Scene(camera, lights = List(point), objects = objs)),
+      "one-sample area light",
+      tolerance = Math.ceil(255 * Math.sqrt(2 * Shading.Epsilon)).toInt
+    )
+
+  test("sRGB and gamma encoding of known values"):
+    assertEquals(Encoding.Srgb.encode(0.0), 0.0)
+    assertEqualsDouble(Encoding.Srgb.encode(1.0), 1.0, 1e-12)
+    assertEqualsDouble(Encoding.Srgb.encode(0.0031308), 0.0031308 * 12.92, 1e-12)
+    assertEqualsDouble(Encoding.Srgb.encode(0.5), 1.055 * Math.pow(0.5, 1 / 2.4) - 0.055, 1e-12)
+    assertEqualsDouble(Encoding.Power(2.2).encode(0.5), Math.pow(0.5, 1 / 2.2), 1e-12)
+    assertEquals(Encoding.parse("1"), Right(Encoding.Linear))
+    assertEquals(Encoding.parse("SRGB"), Right(Encoding.Srgb))
+    assert(Encoding.parse("0").isLeft && Encoding.parse("-2").isLeft && Encoding.parse("x").isLeft)
+
+  test("the encoding applies after the colour is brought into range, and after averaging samples"):
+    val light = Light(Vec3(0, 0, -10), Colour(2, 1, 0.5))
+    val scene = Scene(camera, lights = List(light), objects = List(matte(wall)))
+    val srgb  = (n: Int) =>
+      Renderer.render(scene, CameraConfig(1, 1, 0.75, 1, 1, samples = n, encoding = Encoding.Srgb))
+    // (2, 1, 0.5) is brought to (1, 0.5, 0.25), then each channel encoded.
+    assertEquals(
+      samples(srgb(1)),
+      List(1.0, 0.5, 0.25).map(c => Colour.quantise(Encoding.Srgb.encode(c), 255))
+    )
+    assertEquals(samples(srgb(3)), samples(srgb(1)))
