@@ -21,10 +21,27 @@ class DeterminismSuite extends munit.FunSuite:
   )
   private val config = CameraConfig(1, 1, 0.75, 97, 61, samples = 2)
 
+  // Version 2: glass, highlights and an area light.
+  private val glassy = scene.copy(
+    lights = Light(
+      Vec3(-3, 4, -4),
+      area = Some(AreaLight(Vec3(1, 0, 0), Vec3(0, 0, 1), 4, 3))
+    ) :: scene.lights.tail.toList,
+    objects = scene.objects :+ SceneObject(
+      Sphere(Vec3(0.2, -0.2, -1.5), 0.5),
+      Surface(0.1, 0.1, transmit = 0.9, ior = 1.5, phong = 0.8, specular = 0.3)
+    )
+  )
+
   test("1, 2, 3 and 8 threads give the same bitmap as the sequential renderer"):
     val expected = Renderer.renderSequential(scene, config)
     for threads <- List(1, 2, 3, 8) do
       assertEquals(Renderer.render(scene, config, threads), expected, s"$threads threads")
+
+  test("a version 2 scene (glass, highlights, an area light) too"):
+    val expected = Renderer.renderSequential(glassy, config)
+    for threads <- List(1, 2, 3, 8) do
+      assertEquals(Renderer.render(glassy, config, threads), expected, s"$threads threads")
 
   test("every row is reported once"):
     val rows = java.util.concurrent.atomic.AtomicInteger()

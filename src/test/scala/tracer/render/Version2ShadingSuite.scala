@@ -226,3 +226,18 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
       List(1.0, 0.5, 0.25).map(c => Colour.quantise(Encoding.Srgb.encode(c), 255))
     )
     assertEquals(samples(srgb(3)), samples(srgb(1)))
+
+  test("quick mode ignores every version 2 attribute"):
+    val v2 = Surface(0.5, 0.3, Pigment.Solid(Colour(0.2, 0.6, 0.9)), 0.9, 20, 0.5, 0.2, 0.7, 1.5)
+    val v1 = Surface(0.5, 0.3, Pigment.Solid(Colour(0.2, 0.6, 0.9)))
+    def scene(s: Surface, area: Option[AreaLight]) = Scene(
+      camera,
+      lights = List(Light(Vec3(-2, 3, -4), area = area)),
+      objects = List(SceneObject(Sphere(Vec3.Zero, 1), s), matte(Plane.at(Vec3.UnitY, -1)))
+    )
+    val quick =
+      (s: Scene) => Renderer.render(s, CameraConfig(1, 1, 0.75, 40, 30, mode = ShadingMode.Quick))
+    assertEquals(
+      quick(scene(v2, Some(AreaLight(Vec3(1, 0, 0), Vec3(0, 1, 0), 3, 3)))),
+      quick(scene(v1, None))
+    )
