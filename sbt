@@ -39,6 +39,9 @@ fi
 
 cd "$(dirname "${BASH_SOURCE[0]}")"
 batch=()
-# Without a terminal (CI, scripts) sbt must not wait for input.
-if [ ! -t 0 ] || [ -n "${CI:-}" ]; then batch=(-Dsbt.batch=true); fi
+# Without a terminal (CI, scripts) sbt must not wait for input, and must not colour its log or
+# redraw it with the super shell's escape sequences.
+if [ ! -t 0 ] || [ -n "${CI:-}" ]; then
+  batch=(-Dsbt.batch=true -Dsbt.supershell=false -Dsbt.color=false -Dsbt.ci=true)
+fi
 exec java -Xss4m -Xmx3g ${batch[@]+"${batch[@]}"} ${SBT_JAVA_OPTS:-} -jar "$jar" "$@"

@@ -155,3 +155,32 @@ class ScriptsSuite extends MovieWorkspace:
       Files.readString(home.resolve("docs/api.md")),
       "run: scripts/extract-docs.sh > docs/api.md"
     )
+
+  workspace.test("ci-totals.sh ends CI with the plain totals line, even after sbt's escape codes"):
+    d =>
+      val log = d.resolve("sbt.log")
+      Files.writeString(
+        log,
+        "[info] \u001b[32mPassed: Total 12, Failed 0, Errors 0, Passed 12\u001b[0m\n" +
+          "[error] Failed: Total 5, Failed 1, Errors 1, Passed 3\n\u001b[0J"
+      )
+      val e = run(List("bash", "scripts/ci-totals.sh", log.toString, "1"))
+      assertEquals(e.status, 0, e.err)
+      assertEquals(e.out.linesIterator.toList.last, "15 passed, 2 failed")
+      assert(e.out.endsWith("\n15 passed, 2 failed\n"), e.out)
+      Files.writeString(log, "[info] Passed: Total 3, Failed 0, Errors 0, Passed 3\n")
+      assertEquals(
+        run(List("bash", "scripts/ci-totals.sh", log.toString, "0")).out,
+        "3 passed, 0 failed\n"
+      )
+      // A run that failed without a failing test (a compile error) counts one failure.
+      assertEquals(
+        run(List("bash", "scripts/ci-totals.sh", log.toString, "1")).out,
+        "3 passed, 1 failed\n"
+      )
+
+  test(".ci/run runs the README's test command and closes with ci-totals.sh"):
+    val ci     = Files.readString(home.resolve(".ci/run"))
+    val readme = Files.readString(home.resolve("README.md"))
+    assert(readme.contains("    bash .ci/run\n"), "README's test command")
+    assert(ci.contains("./sbt check") && ci.contains("scripts/ci-totals.sh"), ci)

@@ -368,15 +368,23 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   ): Result[List[Element]] =
     val unknownAttribute = e.node.attributes.asAttrMap.keys.toList.sorted.find(k => !attributes(k))
     val strayText        = e.node.child.collectFirst {
-      case t: Text if t.text.trim.nonEmpty => t.text.trim
+      case t: Text if t.text.trim.nonEmpty => t
     }
     val elements = e.node.child.collect { case c: Elem => element(c) }.toList
     unknownAttribute match
       case Some(key) => e.fail(s"unknown attribute $key")
       case None      =>
         strayText match
-          case Some(text) => e.fail(s"unexpected text '${text.take(20)}'")
-          case None       =>
+          case Some(text) =>
+            // The error names the line of the text itself, not of its element.
+            Left(
+              SceneError(
+                doc.lineOf(text).orElse(e.line),
+                e.name,
+                s"unexpected text '${text.text.trim.take(20)}'"
+              )
+            )
+          case None =>
             elements.find(c => !children(c.name)) match
               case Some(c) => c.fail(s"unknown element inside <${e.name}>")
               case None    => Right(elements)

@@ -5,17 +5,20 @@ import java.util.IdentityHashMap
 import javax.xml.parsers.SAXParserFactory
 import org.xml.sax.{Attributes, InputSource, Locator, SAXException, SAXParseException}
 import scala.xml.parsing.NoBindingFactoryAdapter
-import scala.xml.{Elem, MetaData, NamespaceBinding, Node}
+import scala.xml.{Elem, MetaData, NamespaceBinding, Node, Text}
 
-/** An XML document parsed safely, with the line of every element's start tag.
+/** An XML document parsed safely, with the line of every element's start tag and of the first
+  * non-blank character of every text between elements.
   *
   * @param root the document element
-  * @param lines where each element starts, by identity
+  * @param lines where each element or text starts, by identity
   */
 final class XmlDocument private (val root: Elem, lines: IdentityHashMap[Node, Int]):
 
-  /** The line of `element`'s start tag, if it came from this document. */
-  def lineOf(element: Node): Option[Int] = Option(lines.get(element))
+  /** The line of `node`'s start tag, or of a text node's first non-blank character, if it came
+    * from this document.
+    */
+  def lineOf(node: Node): Option[Int] = Option(lines.get(node))
 
 /** Parses XML with scala-xml and a hardened SAX parser. */
 object XmlDocument:
@@ -57,11 +60,32 @@ object XmlDocument:
     factory.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false)
     factory.newSAXParser().getXMLReader
 
-  /** scala-xml's tree builder, noting the line of each start tag as the SAX locator reports it. */
+  /** scala-xml's tree builder, noting the line of each start tag and of the first non-blank
+    * character of each text as the SAX locator reports them.
+    */
   private final class LineRecordingAdapter extends NoBindingFactoryAdapter:
     val lines: IdentityHashMap[Node, Int] = IdentityHashMap()
     private var locator: Option[Locator]  = None
     private var openLines: List[Int]      = Nil
+    private var textLine: Option[Int]     = None
+
+    /** Notes where the text gathered so far first shows a non-blank character: the locator
+      * stands at the end of the chunk, so count back the line breaks after that character.
+      */
+    override def characters(ch: Array[Char], start: Int, length: Int): Unit =
+      if textLine.isEmpty then
+        val first = (start until start + length).find(i => !Character.isWhitespace(ch(i)))
+        first.foreach { i =>
+          val breaksAfter = (i until start + length).count(ch(_) == '\n')
+          textLine = locator.map(_.getLineNumber - breaksAfter).filter(_ > 0)
+        }
+      super.characters(ch, start, length)
+
+    override def createText(text: String): Text =
+      val node = super.createText(text)
+      textLine.foreach(line => lines.put(node, line))
+      textLine = None
+      node
 
     override def setDocumentLocator(l: Locator): Unit = locator = Some(l)
 

@@ -183,6 +183,20 @@ class SceneXmlSuite extends munit.FunSuite:
       "unexpected text 'bright'"
     )
 
+  test("stray text is reported at its own line, not its element's"):
+    assertError(
+      s"<scene>\n$camera\n   stray words\n</scene>",
+      Some(3),
+      "scene",
+      "unexpected text 'stray words'"
+    )
+    assertError(
+      s"<scene>$camera<light>\n\n\n  <location x=\"0\" y=\"0\" z=\"0\"/>\n  lamp\n  \n</light></scene>",
+      Some(5),
+      "light",
+      "unexpected text 'lamp'"
+    )
+
   test("a missing required element or attribute is an error"):
     assertError(
       "<scene><camera><location x=\"0\" y=\"0\" z=\"-5\"/></camera></scene>",
