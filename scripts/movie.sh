@@ -17,7 +17,9 @@
 # Environment: TRACER_OPTS (extra tracer options, e.g. "-x 640 -a 2"), MOVIE_FPS (default 25),
 # MOVIE_JOBS (frames rendered at once on this machine, default 1) and MOVIE_HOSTS (a GNU parallel
 # sshlogin file: render on those machines too, which must see TRACER, the scenes and the frame
-# directory at the same paths). Either of the last two renders through GNU parallel.
+# directory at the same paths). Either of the last two renders through GNU parallel. FARM_JOBS and
+# FARM_HOSTS, as scripts/still.sh reads them, stand in for MOVIE_JOBS and MOVIE_HOSTS when those
+# are not set.
 # Exit status: 0 success, 1 a frame or the encoding failed, 2 a usage error.
 set -uo pipefail
 
@@ -38,10 +40,10 @@ case "$output" in
   *) die "OUTPUT '$output' must end in .mpg (MPEG-1) or .mp4 (H.264)" 2 ;;
 esac
 case "$fps" in '' | *[!0-9]* | 0) die "MOVIE_FPS must be a positive whole number, got '$fps'" 2 ;; esac
-jobs=${MOVIE_JOBS:-1}
-hosts=${MOVIE_HOSTS:-}
-case "$jobs" in '' | *[!0-9]* | 0) die "MOVIE_JOBS must be a positive whole number, got '$jobs'" 2 ;; esac
-if [ -n "$hosts" ] && [ ! -r "$hosts" ]; then die "MOVIE_HOSTS '$hosts' is not a readable sshlogin file" 2; fi
+jobs=${MOVIE_JOBS:-${FARM_JOBS:-1}}
+hosts=${MOVIE_HOSTS:-${FARM_HOSTS:-}}
+case "$jobs" in '' | *[!0-9]* | 0) die "MOVIE_JOBS (or FARM_JOBS) must be a positive whole number, got '$jobs'" 2 ;; esac
+if [ -n "$hosts" ] && [ ! -r "$hosts" ]; then die "MOVIE_HOSTS (or FARM_HOSTS) '$hosts' is not a readable sshlogin file" 2; fi
 if { [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; } && ! command -v parallel >/dev/null 2>&1; then
   die "MOVIE_JOBS and MOVIE_HOSTS need GNU parallel: install it (Debian/Ubuntu: sudo apt-get install parallel; macOS: brew install parallel)"
 fi

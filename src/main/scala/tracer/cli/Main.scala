@@ -4,7 +4,7 @@ import java.io.{IOException, InputStream, PrintStream}
 import java.nio.file.{Files, Path}
 import scala.util.control.NonFatal
 import tracer.image.Bitmap
-import tracer.io.{Images, OutputFile, SceneSources, SceneXml}
+import tracer.io.{Images, OutputFile, SceneSources, SceneXml, TextureFiles}
 import tracer.render.{CameraConfig, Renderer, ShadingMode}
 import tracer.scene.Scene
 
@@ -43,9 +43,18 @@ object Main:
         case Command.Version(line) =>
           out.println(line)
           Success
+        case Command.Stack(bands, output) =>
+          stack(bands, output, cwd).fold(fail(Failure, _), _ => Success)
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
           render(options, in, out, err, cwd).fold(p => fail(p.status, p.message), _ => Success)
+        case Command.Size(options) =>
+          val size = scene(options, in, err, cwd).map(cameraConfig(_, options))
+          size.fold(
+            fail(Failure, _),
+            c =>
+              out.println(s"${c.columns} ${c.rows}"); Success
+          )
     catch
       case _: OutOfMemoryError =>
         fail(Failure, "out of memory: try a smaller image or more heap (-Xmx)")
@@ -64,12 +73,8 @@ object Main:
     def failure(message: String) = Problem(Failure, message)
     val output                   = cwd.resolve(options.output)
     for
-      _              <- OutputFile.checkWritable(output).left.map(failure)
-      (bytes, where) <- sceneBytes(options.input, in, cwd).left.map(failure)
-      scene          <- SceneXml
-        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
-        .left
-        .map(e => failure(s"scene: ${e.describe}"))
+      _     <- OutputFile.checkWritable(output).left.map(failure)
+      scene <- scene(options, in, err, cwd).left.map(failure)
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)
@@ -79,6 +84,40 @@ object Main:
       )
       _ <- Images.save(image, output).left.map(failure)
     yield if options.timing then out.println(s"Tracetime: $millis ms")
+
+  /** The scene, from `-i FILE` or standard input, with its textures and meshes; warnings to `err`. */
+  private def scene(
+      options: Options,
+      in: InputStream,
+      err: PrintStream,
+      cwd: Path
+  ): Either[String, Scene] =
+    sceneBytes(options.input, in, cwd).flatMap { (bytes, where) =>
+      SceneXml
+        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
+        .left
+        .map(e => s"scene: ${e.describe}")
+    }
+
+  /** Writes `output` as the images `bands`, read in order, one below the other (`--stack`). */
+  private def stack(bands: List[String], output: String, cwd: Path): Either[String, Unit] =
+    val target = cwd.resolve(output)
+    for
+      _      <- OutputFile.checkWritable(target)
+      images <- bands.foldLeft[Either[String, List[Bitmap]]](Right(Nil)) { (done, name) =>
+        done.flatMap(list =>
+          TextureFiles.read(cwd.resolve(name)) match
+            case Right(image) => Right(image :: list)
+            case Left(why)    => Left(s"--stack: cannot read $name: $why")
+        )
+      }
+      joined <- images.reverse match
+        case first :: rest
+            if rest.forall(b => b.width == first.width && b.maxval == first.maxval) =>
+          Right(Bitmap.stack(first :: rest))
+        case _ => Left(s"--stack: the images ${bands.mkString(", ")} differ in width or depth")
+      _ <- Images.save(joined, target)
+    yield ()
 
   /** The scene's bytes and the directory its relative paths resolve against: FILE's own
     * directory with `-i FILE`, else standard input and the working directory.

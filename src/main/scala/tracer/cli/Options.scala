@@ -22,6 +22,9 @@ import tracer.render.CameraConfig
   * @param band    `-R a:b`, the rows a until b to render, when only a band is wanted
   * @param input   `-i FILE`, the scene file; standard input when absent
   * @param version `--version`, print the version instead of rendering
+  * @param size    `--size`, print the picture's size `X Y` instead of rendering
+  * @param stack   `--stack FILE`, repeated: write OUTPUT as these images one below the other
+  *   instead of rendering (how `scripts/still.sh` joins its bands)
   */
 final case class Options(
     output: String = "",
@@ -38,7 +41,9 @@ final case class Options(
     encoding: Encoding = Encoding.Linear,
     band: Option[Range] = None,
     input: Option[String] = None,
-    version: Boolean = false
+    version: Boolean = false,
+    size: Boolean = false,
+    stack: List[String] = Nil
 )
 
 /** What the command line asks for: a render, the usage text, or a usage error. */
@@ -51,6 +56,12 @@ enum Command:
 
   /** Print `tracer VERSION` and exit successfully (`--version`). */
   case Version(line: String)
+
+  /** Print the picture's size `X Y` that these options and the scene give (`--size`). */
+  case Size(options: Options)
+
+  /** Write `output` as the images `bands` one below the other (`--stack`). */
+  case Stack(bands: List[String], output: String)
 
   /** Report this usage error and exit with status 2. */
   case UsageError(message: String)
@@ -68,8 +79,11 @@ object Options:
       (result, errors) match
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}")
-        case (Some(options), Nil) if options.output.isEmpty =>
+        case (Some(options), Nil) if options.output.isEmpty && !options.size =>
           Command.UsageError("Missing argument OUTPUT")
+        case (Some(options), Nil) if options.size           => Command.Size(options)
+        case (Some(options), Nil) if options.stack.nonEmpty =>
+          Command.Stack(options.stack, options.output)
         case (Some(options), Nil) => Command.Render(options)
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
@@ -165,6 +179,14 @@ object Options:
         .valueName("FILE")
         .action((v, o) => o.copy(input = Some(v)))
         .text("read the scene from FILE, its textures and meshes relative to FILE's directory"),
+      opt[Unit]("size")
+        .action((_, o) => o.copy(size = true))
+        .text("print the picture's size 'X Y' (after the size rule) and exit; OUTPUT not needed"),
+      opt[String]("stack")
+        .valueName("FILE")
+        .unbounded()
+        .action((v, o) => o.copy(stack = o.stack :+ v))
+        .text("repeated: write OUTPUT as these PPM/PNG images one below the other, no rendering"),
       opt[Unit]("version")
         .action((_, o) => o.copy(version = true))
         .text("print the version and exit"),

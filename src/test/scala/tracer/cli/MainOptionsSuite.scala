@@ -129,3 +129,30 @@ class MainOptionsSuite extends munit.FunSuite with Images:
   dir.test("bad -g values are usage errors, exit 2"): d =>
     for value <- List("0", "-1", "abc", "", "NaN") do
       assertFailed(run(d, "-x", "8", "-g", value, "o.ppm")(simple), 2, "-g")
+
+  dir.test("--size prints the picture's size after the size rule, and renders nothing"): d =>
+    assertEquals(run(d, "-x", "800", "--size")(simple), Run(0, "800 600\n", ""))
+    assertEquals(run(d, "-w", "2", "-x", "100", "-y", "50", "--size")(simple).out, "100 50\n")
+    Files.writeString(d.resolve("s.xml"), simple)
+    assertEquals(run(d, "-i", "s.xml", "--size", "ignored.png")().out, "640 480\n")
+    assert(!Files.exists(d.resolve("ignored.png")))
+    assertFailed(run(d, "--size")("<scene>"), 1, "scene")
+
+  dir.test("--stack writes OUTPUT as the images one below the other, whole or not at all"): d =>
+    run(d, "-x", "20", "-R", "0:4", "top.ppm")(simple)
+    run(d, "-x", "20", "-R", "4:15", "bottom.png")(simple)
+    run(d, "-x", "20", "-R", "0:15", "whole.ppm")(simple)
+    assertEquals(
+      run(d, "--stack", "top.ppm", "--stack", "bottom.png", "joined.ppm")(),
+      Run(0, "", "")
+    )
+    assertEquals(bytes(d.resolve("joined.ppm")), bytes(d.resolve("whole.ppm")))
+    run(d, "-x", "21", "-R", "0:4", "wide.ppm")(simple)
+    Files.writeString(d.resolve("out.png"), "old")
+    assertFailed(
+      run(d, "--stack", "top.ppm", "--stack", "wide.ppm", "out.png")(),
+      1,
+      "differ in width"
+    )
+    assertFailed(run(d, "--stack", "top.ppm", "--stack", "none.ppm", "out.png")(), 1, "none.ppm")
+    assertEquals(Files.readString(d.resolve("out.png")), "old")

@@ -3,6 +3,7 @@ package tracer.testkit
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.attribute.PosixFilePermissions
 import java.nio.file.{Files, Path}
+import java.net.ServerSocket
 import java.util.concurrent.TimeUnit
 import scala.jdk.CollectionConverters.*
 
@@ -114,3 +115,68 @@ trait MovieWorkspace extends munit.FunSuite:
       val real = run(List("bash", "-c", s"command -v $tool")).out.trim
       if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
     bin
+
+  /** A throwaway OpenSSH server on a free loopback port, for the current user, with fresh keys. */
+  protected final class Sshd(dir: Path, port: Int, process: Process):
+    /** An sshlogin file for GNU parallel: this server, one job, and the local machine `:`. */
+    def loginFile(path: Path): Path =
+      val ssh =
+        s"ssh -p $port -i ${dir.resolve("user_key")} -o StrictHostKeyChecking=no -o UserKnownHostsFile=/dev/null " +
+          s"-o LogLevel=ERROR -o BatchMode=yes ${System.getProperty("user.name")}@127.0.0.1"
+      Files.writeString(path, s"1/$ssh\n1/:\n")
+
+    def stop(): Unit =
+      process.destroy()
+      process.waitFor(10, TimeUnit.SECONDS)
+      Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+
+  protected object Sshd:
+    def start(dir: Path): Sshd =
+      for key <- List("host_key", "user_key") do
+        assertEquals(
+          run(
+            List("ssh-keygen", "-q", "-t", "ed25519", "-N", "", "-f", dir.resolve(key).toString)
+          ).status,
+          0
+        )
+      Files.copy(dir.resolve("user_key.pub"), dir.resolve("authorized_keys"))
+      val port =
+        val s = ServerSocket(0);
+        try s.getLocalPort
+        finally s.close()
+      Files.writeString(
+        dir.resolve("sshd_config"),
+        s"""Port $port
+           |ListenAddress 127.0.0.1
+           |HostKey ${dir.resolve("host_key")}
+           |AuthorizedKeysFile ${dir.resolve("authorized_keys")}
+           |PidFile ${dir.resolve("sshd.pid")}
+           |StrictModes no
+           |UsePAM no
+           |PasswordAuthentication no
+           |KbdInteractiveAuthentication no
+           |PermitRootLogin prohibit-password
+           |""".stripMargin
+      )
+      // Privilege separation needs this directory when sshd runs as root.
+      if System.getProperty("user.name") == "root" then
+        Files.createDirectories(Path.of("/run/sshd"))
+      val sshd = Path.of("/usr/sbin/sshd")
+      assert(
+        Files.isExecutable(sshd),
+        "needs OpenSSH's sshd (apt-get install openssh-server; .ci/run installs it)"
+      )
+      val process =
+        ProcessBuilder(sshd.toString, "-D", "-e", "-f", dir.resolve("sshd_config").toString)
+          .redirectErrorStream(true)
+          .redirectOutput(dir.resolve("sshd.log").toFile)
+          .start()
+      // Wait until it accepts connections.
+      val ready = (1 to 50).exists { _ =>
+        Thread.sleep(100)
+        try
+          java.net.Socket("127.0.0.1", port).close(); true
+        catch case _: java.io.IOException => false
+      }
+      assert(ready, s"sshd did not start: ${Files.readString(dir.resolve("sshd.log"))}")
+      Sshd(dir, port, process)
