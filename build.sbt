@@ -75,7 +75,7 @@ movie := {
   val log    = streams.value.log
   val frames = (root / Compile / fullClasspath).value.files
   (root / Compile / runner).value.run("tracer.demo.Animation", frames, Seq(dir.toString), log).get
-  val options = sys.env.getOrElse("TRACER_OPTS", "-x 640 -a 2")
+  val options = sys.env.getOrElse("TRACER_OPTS", "-x 640 -a 2 -g srgb")
   log.info(s"rendering the movie's frames with TRACER_OPTS='$options' (built $jar)")
   Seq("tracer.mp4", "tracer.mpg").map { name =>
     val script = Seq(

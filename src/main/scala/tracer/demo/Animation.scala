@@ -31,7 +31,12 @@ object Animation:
       camera = camera(phase),
       background = Colour(0.04, 0.06, 0.14),
       lights = List(
-        Light(Vec3(-5, 8, -6), Colour(0.95, 0.88, 0.78)),
+        // A warm key light with soft shadows (an area light of 4 × 4 sub-lights), a cool fill.
+        Light(
+          Vec3(-5, 8, -6),
+          Colour(0.95, 0.88, 0.78),
+          Some(AreaLight(Vec3(1.2, 0, 0), Vec3(0, 0, 1.2), 4, 4))
+        ),
         Light(Vec3(6, 4, -4), Colour(0.25, 0.32, 0.5))
       ),
       objects = List(
@@ -104,12 +109,20 @@ object Animation:
       Surface(1, 0, Pigment.Textured(texture))
     )
 
-  /** A red ball bouncing three times, squashing nothing: |sin| gives the arcs. */
+  /** A glass ball bouncing three times, squashing nothing: |sin| gives the arcs. */
   private def bouncingBall(t: Double): SceneObject =
     val height = 0.35 + 1.4 * Math.abs(Math.sin(Math.PI * 3 * t / Seconds))
     SceneObject(
       Sphere(Vec3(1.6, height, -0.9), 0.35),
-      Surface(0.9, 0.25, Pigment.Solid(Colour(0.85, 0.12, 0.1)))
+      Surface(
+        0.1,
+        0.1,
+        Pigment.Solid(Colour(1, 0.85, 0.8)),
+        phong = 0.9,
+        phongSize = 120,
+        transmit = 0.85,
+        ior = 1.5
+      )
     )
 
   /** A small moon circling the mirror ball, `offset` of a turn ahead. */
@@ -120,7 +133,7 @@ object Animation:
       0.8 + 0.3 * Math.sin(angle * 2),
       0.4 + 1.3 * Math.sin(angle)
     )
-    SceneObject(Sphere(centre, 0.18), Surface(0.9, 0.2, Pigment.Solid(colour)))
+    SceneObject(Sphere(centre, 0.18), Surface(0.9, 0.2, Pigment.Solid(colour), phong = 0.6))
 
   /** The checkered mat under the mirror ball: two textured triangles. */
   private def mat(checker: Texture): List[SceneObject] =
