@@ -44,7 +44,7 @@ class GallerySuite extends munit.FunSuite with Images:
         assertGolden(readImage(output), name.replace(".xml", ""))
       finally Files.delete(output)
 
-  test("together the gallery scenes use every element and attribute of scene-format.md"):
+  test("together the gallery scenes use every element and attribute of docs/scene-format.md"):
     val used = gallery
       .flatMap(n => XML.loadFile(scenes.resolve(n).toFile).descendant_or_self)
       .collect {
@@ -84,7 +84,23 @@ class GallerySuite extends munit.FunSuite with Images:
       "corner",
       "origin",
       "a",
-      "b"
+      "b",
+      "mesh",
+      "mesh@file",
+      "mesh@scale",
+      "rotate",
+      "translate",
+      // Version 2.
+      "surface@phong",
+      "surface@phong-size",
+      "surface@specular",
+      "surface@roughness",
+      "surface@transmit",
+      "surface@ior",
+      "area",
+      "area@samples-a",
+      "area@samples-b",
+      "mesh@smooth"
     )
     assertEquals(format -- used, Set.empty[String])
 
