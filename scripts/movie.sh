@@ -3,12 +3,14 @@
 #
 #   scripts/movie.sh TRACER FRAMES [OUTPUT]
 #
-# TRACER  the full path of the ray tracer program (called as: TRACER -t $TRACER_OPTS FRAME.png < SCENE)
+# TRACER  the full path of the ray tracer program (called as: TRACER -t $TRACER_OPTS --batch LIST,
+#         LIST naming SCENE<TAB>FRAME.png a line)
 # FRAMES  a file naming the frames' scene files, one a line, in order; relative names are relative
 #         to the directory FRAMES is in; blank lines and lines starting with # are skipped
 # OUTPUT  the movie: .mpg (MPEG-1, the default movie.mpg) or .mp4 (H.264, plays in browsers)
 #
-# Each scene is rendered from its own directory, so its relative texture paths work. The frames
+# Each scene is read as the tracer's -i SCENE, so its relative texture paths resolve against its
+# own directory; frames are rendered in batches, many in one tracer process (tracer --batch). The frames
 # are kept as PNG (compressed) in OUTPUT's directory, in NAME-frames/ for a movie NAME.EXT, each with
 # its Tracetime beside it; a second run renders only frames that are missing or older than their
 # scene. When every frame is rendered the script prints "Total tracetime: N ms" (the sum of every
@@ -19,7 +21,8 @@
 # sshlogin file: render on those machines too, which must see TRACER, the scenes and the frame
 # directory at the same paths). Either of the last two renders through GNU parallel. FARM_JOBS and
 # FARM_HOSTS, as scripts/still.sh reads them, stand in for MOVIE_JOBS and MOVIE_HOSTS when those
-# are not set.
+# are not set. MOVIE_CHUNK sets how many frames one tracer process renders (default: all of them
+# serially, up to 8 a job through GNU parallel).
 # Exit status: 0 success, 1 a frame or the encoding failed, 2 a usage error.
 set -uo pipefail
 
@@ -82,21 +85,37 @@ for i in "${!scenes[@]}"; do
   fi
 done
 
-render_frame="$here/render-frame.sh"
+# The frames are rendered in batches: one tracer process renders a chunk of frames
+# (render-frames.sh, tracer --batch), so the JVM starts once a chunk and the later frames run on
+# code the JIT has already compiled. Serially everything is one chunk; through GNU parallel the
+# chunks are small enough to keep every job busy. MOVIE_CHUNK sets the frames a process.
+render_frames="$here/render-frames.sh"
 export TRACER_OPTS="${TRACER_OPTS:-}"
 if [ ${#todo[@]} -gt 0 ]; then
-  if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then
-    # GNU parallel spreads the frames over cores and ssh hosts; a failing frame stops new ones
-    # from starting, and those in flight finish. On hosts, a failed frame is tried again
-    # (elsewhere, if another host is free) before the movie is given up.
+  farm=false
+  if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then farm=true; fi
+  if [ -n "${MOVIE_CHUNK:-}" ]; then chunk=$MOVIE_CHUNK
+  elif $farm; then chunk=$(((${#todo[@]} + 2 * jobs - 1) / (2 * jobs))); [ "$chunk" -le 8 ] || chunk=8
+  else chunk=${#todo[@]}; fi
+  case "$chunk" in '' | *[!0-9]* | 0) die "MOVIE_CHUNK must be a positive whole number, got '$chunk'" 2 ;; esac
+  # One line a chunk: N, SCENE and FRAME of each of its frames, separated by tabs.
+  chunks=()
+  for ((i = 0; i < ${#todo[@]}; i += chunk)); do
+    line=$(printf '%s\t' "${todo[@]:i:chunk}")
+    chunks+=("${line%$'\t'}")
+  done
+  if $farm; then
+    # GNU parallel spreads the chunks over cores and ssh hosts (each column one argument); a
+    # failing frame stops new chunks from starting, and those in flight finish. On hosts, a
+    # failed chunk is tried again (elsewhere, if another host is free) before the movie is given up.
     options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
     if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
-    printf '%s\n' "${todo[@]}" | parallel "${options[@]}" -q "$render_frame" "$tracer" {2} {3} {1} "$count" ||
+    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$count" ||
       die "the movie stopped because a frame failed; run again to render what is missing"
   else
-    for job in "${todo[@]}"; do
-      IFS=$'\t' read -r n scene frame <<< "$job"
-      "$render_frame" "$tracer" "$scene" "$frame" "$n" "$count" || exit 1
+    for line in "${chunks[@]}"; do
+      IFS=$'\t' read -r -a job <<< "$line"
+      "$render_frames" "$tracer" "$count" "${job[@]}" || exit 1
     done
   fi
 fi

@@ -47,7 +47,14 @@ object Main:
           stack(bands, output, cwd).fold(fail(Failure, _), _ => Success)
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
-          render(options, in, out, err, cwd).fold(p => fail(p.status, p.message), _ => Success)
+          render(options, in, err, cwd).fold(
+            p => fail(p.status, p.message),
+            millis =>
+              if options.timing then out.println(s"Tracetime: $millis ms")
+              Success
+          )
+        case Command.Batch(options, list) =>
+          batch(options, list, in, out, err, cwd).fold(fail(Failure, _), identity)
         case Command.Size(options) =>
           val size = scene(options, in, err, cwd).map(cameraConfig(_, options))
           size.fold(
@@ -63,13 +70,13 @@ object Main:
   /** Why a run failed: the exit status and the message. */
   private final case class Problem(status: Int, message: String)
 
+  /** Renders the picture `options` ask for and returns the rendering time in milliseconds. */
   private def render(
       options: Options,
       in: InputStream,
-      out: PrintStream,
       err: PrintStream,
       cwd: Path
-  ): Either[Problem, Unit] =
+  ): Either[Problem, Long] =
     def failure(message: String) = Problem(Failure, message)
     val output                   = cwd.resolve(options.output)
     for
@@ -83,7 +90,40 @@ object Main:
         withProgress(err, band.size)(Renderer.render(scene, config, threads, _, band))
       )
       _ <- Images.save(image, output).left.map(failure)
-    yield if options.timing then out.println(s"Tracetime: $millis ms")
+    yield millis
+
+  /** Renders every frame of the batch list `list` in this one process, each as `-i SCENE OUTPUT`
+    * with `options`; with `-t`, prints `Tracetime: N ms OUTPUT` for each. A frame that fails is
+    * reported as `tracer: SCENE: why` and the others go on; the status is 1 if any failed.
+    */
+  private def batch(
+      options: Options,
+      list: String,
+      in: InputStream,
+      out: PrintStream,
+      err: PrintStream,
+      cwd: Path
+  ): Either[String, Int] =
+    val text =
+      try Right(Files.readString(cwd.resolve(list)))
+      catch
+        case _: java.nio.file.NoSuchFileException =>
+          Left(s"cannot read batch list $list: no such file")
+        case e: IOException => Left(s"cannot read batch list $list: ${e.getMessage}")
+    for
+      source <- text
+      frames <- Batch.parse(source).left.map(why => s"batch list $list: $why")
+    yield
+      val failed = frames.count { frame =>
+        render(options.copy(input = Some(frame.scene), output = frame.output), in, err, cwd) match
+          case Right(millis) =>
+            if options.timing then out.println(s"Tracetime: $millis ms ${frame.output}")
+            false
+          case Left(problem) =>
+            err.println(s"tracer: ${frame.scene}: ${problem.message}")
+            true
+      }
+      if failed == 0 then Success else Failure
 
   /** The scene, from `-i FILE` or standard input, with its textures and meshes; warnings to `err`. */
   private def scene(

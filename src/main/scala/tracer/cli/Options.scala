@@ -25,6 +25,7 @@ import tracer.render.CameraConfig
   * @param size    `--size`, print the picture's size `X Y` instead of rendering
   * @param stack   `--stack FILE`, repeated: write OUTPUT as these images one below the other
   *   instead of rendering (how `scripts/still.sh` joins its bands)
+  * @param batch   `--batch LIST`: render every frame the list names, in this one process
   */
 final case class Options(
     output: String = "",
@@ -43,7 +44,8 @@ final case class Options(
     input: Option[String] = None,
     version: Boolean = false,
     size: Boolean = false,
-    stack: List[String] = Nil
+    stack: List[String] = Nil,
+    batch: Option[String] = None
 )
 
 /** What the command line asks for: a render, the usage text, or a usage error. */
@@ -56,6 +58,9 @@ enum Command:
 
   /** Print `tracer VERSION` and exit successfully (`--version`). */
   case Version(line: String)
+
+  /** Render every frame of the batch list `list` with these options (`--batch`). */
+  case Batch(options: Options, list: String)
 
   /** Print the picture's size `X Y` that these options and the scene give (`--size`). */
   case Size(options: Options)
@@ -79,6 +84,14 @@ object Options:
       (result, errors) match
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}")
+        case (Some(options), Nil) if options.batch.isDefined =>
+          if options.output.nonEmpty then
+            Command.UsageError(
+              s"--batch takes no OUTPUT: the list names them (got ${options.output})"
+            )
+          else if options.input.isDefined then
+            Command.UsageError("--batch takes no -i: the list names the scenes")
+          else Command.Batch(options, options.batch.get)
         case (Some(options), Nil) if options.output.isEmpty && !options.size =>
           Command.UsageError("Missing argument OUTPUT")
         case (Some(options), Nil) if options.size           => Command.Size(options)
@@ -187,6 +200,10 @@ object Options:
         .unbounded()
         .action((v, o) => o.copy(stack = o.stack :+ v))
         .text("repeated: write OUTPUT as these PPM/PNG images one below the other, no rendering"),
+      opt[String]("batch")
+        .valueName("LIST")
+        .action((v, o) => o.copy(batch = Some(v)))
+        .text("render every frame of LIST (lines SCENE<TAB>OUTPUT) in one process; no OUTPUT"),
       opt[Unit]("version")
         .action((_, o) => o.copy(version = true))
         .text("print the version and exit"),

@@ -156,3 +156,45 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     )
     assertFailed(run(d, "--stack", "top.ppm", "--stack", "none.ppm", "out.png")(), 1, "none.ppm")
     assertEquals(Files.readString(d.resolve("out.png")), "old")
+
+  dir.test("--batch renders every frame of a list in one run, each exactly as a separate run"): d =>
+    // Scenes in other directories, with textures and meshes relative to them; -a and -t.
+    val frames = List("textures.xml", "meshes.xml", "materials.xml", "textures.xml")
+    val list   = frames.zipWithIndex
+      .map((scene, i) => s"${scenes.resolve(scene)}\tframe $i.png")
+      .mkString("# frames\n\n", "\n", "\n")
+    Files.writeString(d.resolve("list.txt"), list)
+    val r = run(d, "-x", "40", "-a", "2", "-t", "--batch", "list.txt")()
+    assertEquals(r.status, 0, r.err)
+    assertEquals(r.err, "")
+    val times = r.out.linesIterator.toList
+    assertEquals(times.length, 4, r.out)
+    for (scene, i) <- frames.zipWithIndex do
+      assert(times(i).matches(s"Tracetime: \\d+ ms frame $i\\.png"), times(i))
+      run(d, "-x", "40", "-a", "2", "-i", scenes.resolve(scene).toString, s"single $i.png")()
+      assertEquals(bytes(d.resolve(s"frame $i.png")), bytes(d.resolve(s"single $i.png")), scene)
+
+  dir.test("--batch: a bad frame is named, the others are rendered, and the status is 1"): d =>
+    Files.writeString(d.resolve("good.xml"), simple)
+    Files.writeString(d.resolve("bad.xml"), "<scene>\n<camera/>\n</scene>")
+    Files.writeString(d.resolve("list.txt"), "good.xml\ta.ppm\nbad.xml\tb.ppm\ngood.xml\tc.ppm\n")
+    val r = run(d, "-x", "16", "-t", "--batch", "list.txt")()
+    assertEquals(r.status, 1)
+    assert(
+      r.err.linesIterator.toList.length == 1 && r.err.startsWith("tracer: bad.xml: scene"),
+      r.err
+    )
+    assertEquals(
+      r.out.linesIterator.map(_.replaceAll("\\d+ ms", "N ms")).toList,
+      List("Tracetime: N ms a.ppm", "Tracetime: N ms c.ppm")
+    )
+    assert(Files.exists(d.resolve("a.ppm")) && Files.exists(d.resolve("c.ppm")))
+    assert(!Files.exists(d.resolve("b.ppm")))
+
+  dir.test("--batch: a malformed or missing list, or an OUTPUT beside it, is refused"): d =>
+    Files.writeString(d.resolve("list.txt"), "only-one-column.xml\n")
+    assertFailed(run(d, "--batch", "list.txt")(), 1, "line 1", "SCENE<TAB>OUTPUT")
+    Files.writeString(d.resolve("empty.txt"), "# nothing\n")
+    assertFailed(run(d, "--batch", "empty.txt")(), 1, "no frames")
+    assertFailed(run(d, "--batch", "none.txt")(), 1, "none.txt")
+    assertFailed(run(d, "--batch", "list.txt", "out.png")(), 2, "--batch takes no OUTPUT")

@@ -8,10 +8,13 @@ import java.util.concurrent.TimeUnit
 import scala.jdk.CollectionConverters.*
 
 /** Running scripts as processes, and a movie workspace: a directory whose path has spaces, with a
-  * "logging tracer" that records where (and whether over ssh) each frame was rendered, then runs
-  * the real `tracer`.
+  * "logging tracer" that records, one line a picture it is asked for (every frame of a `--batch`
+  * list), where and whether over ssh it ran, then runs the real `tracer`.
   */
 trait MovieWorkspace extends munit.FunSuite:
+
+  // Each test starts the real tracer (a JVM) several times: allow for a slow, busy machine.
+  override val munitTimeout = scala.concurrent.duration.Duration(3, "min")
 
   protected val home  = Path.of("").toAbsolutePath
   protected val movie = home.resolve("scripts/movie.sh")
@@ -51,7 +54,14 @@ trait MovieWorkspace extends munit.FunSuite:
       executable(
         d.resolve("logging tracer"),
         s"""#!/usr/bin/env bash
-           |echo "$${SSH_CONNECTION:+ssh:}$$PWD" >> "${d.resolve("calls.log")}"
+           |# One line a frame: a --batch run renders every frame its list names.
+           |list=; previous=
+           |for a in "$$@"; do [ "$$previous" = --batch ] && list=$$a; previous=$$a; done
+           |frames=1
+           |[ -z "$$list" ] || frames=$$(grep -c '^[^#]' "$$list")
+           |for ((k = 0; k < frames; k++)); do
+           |  echo "$${SSH_CONNECTION:+ssh:}$$PWD" >> "${d.resolve("calls.log")}"
+           |done
            |exec "${home.resolve("tracer")}" "$$@"
            |""".stripMargin
       )
