@@ -60,10 +60,22 @@ object PovRay:
 
   /** Prints the POV-Ray twin of the scene file named by the first argument (its textures and
     * meshes relative to its directory), tracing as many reflections as the second (default 5).
+    * With `--beside FILE…`, writes each FILE's twin beside it instead (`frame.xml` → `frame.pov`).
     */
   def main(args: Array[String]): Unit =
-    val file  = java.nio.file.Path.of(args.head).toAbsolutePath
-    val depth = args.lift(1).map(_.toInt).getOrElse(CameraConfig.DefaultDepth)
-    tracer.io.SceneXml.load(file, file.getParent) match
-      case Right(scene) => print(write(scene, depth))
-      case Left(error)  => System.err.println(error); sys.exit(1)
+    def twin(name: String, depth: Int): String =
+      val file = java.nio.file.Path.of(name).toAbsolutePath
+      tracer.io.SceneXml.load(file, file.getParent) match
+        case Right(scene) => write(scene, depth)
+        case Left(error)  => System.err.println(error); sys.exit(1)
+    args.toList match
+      case "--beside" :: files =>
+        files.foreach { name =>
+          java.nio.file.Files.writeString(
+            java.nio.file.Path.of(name.replaceAll("\\.xml$", "") + ".pov"),
+            twin(name, CameraConfig.DefaultDepth)
+          )
+        }
+      case name :: depth =>
+        print(twin(name, depth.headOption.fold(CameraConfig.DefaultDepth)(_.toInt)))
+      case Nil => System.err.println("usage: PovRay SCENE [DEPTH] | --beside SCENE..."); sys.exit(2)
