@@ -56,7 +56,12 @@ private final case class Element(node: Elem, line: Option[Int]):
   def fail[A](message: String): Either[SceneError, A] = Left(error(message))
 
   /** The raw text of attribute `key`, if present. */
-  def attribute(key: String): Option[String] = node.attribute(key).map(_.text)
+  def attribute(key: String): Option[String] =
+    // Perf: the value's own text, without building a NodeSeq per lookup.
+    Option(node.attributes(key)).map {
+      case text: Text => text.data
+      case other      => other.text
+    }
 
 /** Walks one parsed document and builds the scene, stopping at the first error. */
 private final class SceneReader(doc: XmlDocument, sources: SceneSources):
@@ -69,21 +74,19 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
     val root = element(doc.root)
     for
       _ <- if root.name == "scene" then Right(()) else root.fail("the root element must be <scene>")
-      children   <- contents(root, attributes = Set(), children = SceneChildren)
-      camera     <- exactlyOne(root, children, "camera").flatMap(camera)
+      children <- contents(root, attributes = Vocabulary.None, children = Vocabulary.SceneChildren)
+      camera   <- exactlyOne(root, children, "camera").flatMap(camera)
       background <- atMostOne(root, children, "background").flatMap(
         _.fold(Right(Colour.Black))(colour(_, 1))
       )
       lights  <- traverse(children.filter(_.name == "light"))(light)
-      objects <- traverse(children.filter(c => ShapeNames(c.name)))(sceneObjects).map(_.flatten)
+      objects <- traverse(children.filter(c => Vocabulary.Shapes(c.name)))(sceneObjects)
+        .map(_.flatten)
     yield Scene(camera, background, lights, objects)
-
-  private val ShapeNames    = Set("sphere", "plane", "triangle", "mesh")
-  private val SceneChildren = Set("camera", "background", "light") ++ ShapeNames
 
   private def camera(e: Element): Result[Camera] =
     for
-      children <- contents(e, Set("zoom", "width", "height"), Set("location", "lookat", "up"))
+      children <- contents(e, Vocabulary.CameraAttributes, Vocabulary.CameraChildren)
       zoom     <- positive(e, "zoom", Camera.DefaultZoom)
       width    <- positive(e, "width", Camera.DefaultWidth)
       height   <- positive(e, "height", Camera.DefaultHeight)
@@ -100,7 +103,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def light(e: Element): Result[Light] =
     for
-      children <- contents(e, Set(), Set("location", "colour", "color", "area"))
+      children <- contents(e, Vocabulary.None, Vocabulary.LightChildren)
       location <- requiredVector(e, children, "location")
       colour   <- atMostOne(e, children, "colour", "color").flatMap(
         _.fold(Right(Colour.White))(lightColour)
@@ -111,7 +114,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   /** An `<area samples-a samples-b>` with its axes `<a>` and `<b>` (scene-format-v2). */
   private def areaLight(e: Element): Result[AreaLight] =
     for
-      children <- contents(e, Set("samples-a", "samples-b"), Set("a", "b"))
+      children <- contents(e, Vocabulary.AreaAttributes, Vocabulary.AreaChildren)
       samplesA <- samples(e, "samples-a")
       samplesB <- samples(e, "samples-b")
       a        <- requiredVector(e, children, "a")
@@ -142,11 +145,11 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
     */
   private def mesh(e: Element): Result[List[SceneObject]] =
     for
-      children <- contents(e, Set("file", "scale", "smooth"), Set("rotate", "translate", "surface"))
-      file     <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
-      scale    <- positive(e, "scale", 1.0)
-      smooth   <- boolean(e, "smooth", default = false)
-      rotate   <- optionalVector(e, children, Vec3.Zero, "rotate")
+      children  <- contents(e, Vocabulary.MeshAttributes, Vocabulary.MeshChildren)
+      file      <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
+      scale     <- positive(e, "scale", 1.0)
+      smooth    <- boolean(e, "smooth", default = false)
+      rotate    <- optionalVector(e, children, Vec3.Zero, "rotate")
       translate <- optionalVector(e, children, Vec3.Zero, "translate")
       surface   <- surface(e, children, texturable = true, refractive = false)
       obj       <- sources.mesh(file).left.map(why => e.error(s"cannot read mesh file: $why"))
@@ -172,7 +175,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def sphere(e: Element): Result[SceneObject] =
     for
-      children <- contents(e, Set("radius"), Set("centre", "center", "pole", "equator", "surface"))
+      children <- contents(e, Vocabulary.SphereAttributes, Vocabulary.SphereChildren)
       radius   <- requiredNumber(e, "radius")
       _        <-
         if radius > 0 then Right(())
@@ -192,7 +195,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def plane(e: Element): Result[SceneObject] =
     for
-      children <- contents(e, Set("distance"), Set("normal", "point", "surface"))
+      children <- contents(e, Vocabulary.PlaneAttributes, Vocabulary.PlaneChildren)
       normal   <- requiredVector(e, children, "normal")
       _        <-
         if normal.normalised.isDefined then Right(())
@@ -209,7 +212,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def triangle(e: Element): Result[SceneObject] =
     for
-      children     <- contents(e, Set(), Set("corner", "origin", "a", "b", "surface"))
+      children     <- contents(e, Vocabulary.None, Vocabulary.TriangleChildren)
       corners      <- traverse(children.filter(_.name == "corner"))(vector)
       legs         <- traverse(List("origin", "a", "b"))(name => atMostOne(e, children, name))
       (t0, t1, t2) <- (corners, legs) match
@@ -236,7 +239,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       case None    => Right(Surface())
       case Some(e) =>
         for
-          children   <- contents(e, SurfaceAttributes, Set("colour", "color", "texture"))
+          children   <- contents(e, Vocabulary.SurfaceAttributes, Vocabulary.SurfaceChildren)
           diffuse    <- bounded(e, "diffuse", 1.0, atLeastZero)
           reflection <- bounded(e, "reflection", 0.0, zeroToOne)
           phong      <- bounded(e, "phong", 0.0, atLeastZero)
@@ -267,9 +270,6 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
         )
     }
 
-  private val SurfaceAttributes =
-    Set("diffuse", "reflection", "phong", "phong-size", "specular", "roughness", "transmit", "ior")
-
   /** A range rule for a number: a test and the words that describe it in errors. */
   private final case class Range(accepts: Double => Boolean, describe: String)
   private val atLeastZero    = Range(_ >= 0, "at least 0")
@@ -294,7 +294,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def texture(e: Element, owner: Element, texturable: Boolean): Result[Texture] =
     for
-      _ <- contents(e, Set("file"), Set())
+      _ <- contents(e, Vocabulary.TextureAttributes, Vocabulary.None)
       _ <-
         if texturable then Right(())
         else e.fail(s"textures are allowed on spheres and triangles only, not <${owner.name}>")
@@ -311,7 +311,7 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def vector(e: Element): Result[Vec3] =
     for
-      _ <- contents(e, Set("x", "y", "z"), Set())
+      _ <- contents(e, Vocabulary.VectorAttributes, Vocabulary.None)
       x <- requiredNumber(e, "x")
       y <- requiredNumber(e, "y")
       z <- requiredNumber(e, "z")
@@ -320,12 +320,13 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
   /** A colour element with channels from 0 to `max`. */
   private def colour(e: Element, max: Double): Result[Colour] =
     for
-      _        <- contents(e, Set("r", "g", "b"), Set())
+      _        <- contents(e, Vocabulary.ColourAttributes, Vocabulary.None)
       channels <- traverse(List("r", "g", "b")) { key =>
         requiredNumber(e, key).flatMap { c =>
-          val range = if max.isInfinite then "at least 0" else s"from 0 to ${show(max)}"
           if c >= 0 && c <= max then Right(c)
-          else e.fail(s"attribute $key must be $range, got ${show(c)}")
+          else
+            val range = if max.isInfinite then "at least 0" else s"from 0 to ${show(max)}"
+            e.fail(s"attribute $key must be $range, got ${show(c)}")
         }
       }
     yield Colour(channels(0), channels(1), channels(2))
@@ -366,9 +367,11 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       attributes: Set[String],
       children: Set[String]
   ): Result[List[Element]] =
-    val unknownAttribute = e.node.attributes.asAttrMap.keys.toList.sorted.find(k => !attributes(k))
+    // The first unknown attribute in alphabetical order, so the message does not depend on the
+    // parser's attribute order.
+    val unknownAttribute = e.node.attributes.iterator.map(_.key).filterNot(attributes).minOption
     val strayText        = e.node.child.collectFirst {
-      case t: Text if t.text.trim.nonEmpty => t
+      case t: Text if !t.text.isBlank => t
     }
     val elements = e.node.child.collect { case c: Elem => element(c) }.toList
     unknownAttribute match
@@ -404,16 +407,15 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       case _ :: second :: _ =>
         second.fail(s"<${owner.name}> may have only one <${names.mkString("> or <")}>")
 
-  private def required[A](owner: Element, value: Option[A], what: String): Result[A] =
+  private def required[A](owner: Element, value: Option[A], what: => String): Result[A] =
     value.toRight(owner.error(s"missing $what"))
 
   private def number(e: Element, key: String): Result[Option[Double]] =
     traverseOption(e.attribute(key)) { raw =>
       val text  = raw.trim
-      val value = if Decimal.Pattern.matches(text) then text.toDoubleOption else None
-      value
-        .filter(_.isFinite)
-        .toRight(e.error(s"attribute $key must be a finite decimal number, got '$raw'"))
+      val value = if Decimal.matches(text) then java.lang.Double.parseDouble(text) else Double.NaN
+      if value.isFinite then Right(value)
+      else Left(e.error(s"attribute $key must be a finite decimal number, got '$raw'"))
     }
 
   private def requiredNumber(e: Element, key: String): Result[Double] =
@@ -438,3 +440,66 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
 
   private def traverseOption[A, B](item: Option[A])(f: A => Result[B]): Result[Option[B]] =
     item.fold[Result[Option[B]]](Right(None))(a => f(a).map(Some(_)))
+
+/** The names each element of the scene format allows: its attributes and its child elements. */
+private object Vocabulary:
+  /** Nothing allowed. */
+  val None: Set[String] = Set()
+
+  /** The elements that are shapes. */
+  val Shapes: Set[String] = Set("sphere", "plane", "triangle", "mesh")
+
+  /** What `<scene>` may hold. */
+  val SceneChildren: Set[String] = Set("camera", "background", "light") ++ Shapes
+
+  /** `<camera>`'s attributes. */
+  val CameraAttributes: Set[String] = Set("zoom", "width", "height")
+
+  /** `<camera>`'s children. */
+  val CameraChildren: Set[String] = Set("location", "lookat", "up")
+
+  /** `<light>`'s children. */
+  val LightChildren: Set[String] = Set("location", "colour", "color", "area")
+
+  /** `<area>`'s attributes. */
+  val AreaAttributes: Set[String] = Set("samples-a", "samples-b")
+
+  /** `<area>`'s children. */
+  val AreaChildren: Set[String] = Set("a", "b")
+
+  /** `<mesh>`'s attributes. */
+  val MeshAttributes: Set[String] = Set("file", "scale", "smooth")
+
+  /** `<mesh>`'s children. */
+  val MeshChildren: Set[String] = Set("rotate", "translate", "surface")
+
+  /** `<sphere>`'s attributes. */
+  val SphereAttributes: Set[String] = Set("radius")
+
+  /** `<sphere>`'s children. */
+  val SphereChildren: Set[String] = Set("centre", "center", "pole", "equator", "surface")
+
+  /** `<plane>`'s attributes. */
+  val PlaneAttributes: Set[String] = Set("distance")
+
+  /** `<plane>`'s children. */
+  val PlaneChildren: Set[String] = Set("normal", "point", "surface")
+
+  /** `<triangle>`'s children. */
+  val TriangleChildren: Set[String] = Set("corner", "origin", "a", "b", "surface")
+
+  /** `<surface>`'s attributes, versions 1 and 2. */
+  val SurfaceAttributes: Set[String] =
+    Set("diffuse", "reflection", "phong", "phong-size", "specular", "roughness", "transmit", "ior")
+
+  /** `<surface>`'s children. */
+  val SurfaceChildren: Set[String] = Set("colour", "color", "texture")
+
+  /** `<texture>`'s attributes. */
+  val TextureAttributes: Set[String] = Set("file")
+
+  /** A vector element's attributes. */
+  val VectorAttributes: Set[String] = Set("x", "y", "z")
+
+  /** A colour element's attributes. */
+  val ColourAttributes: Set[String] = Set("r", "g", "b")

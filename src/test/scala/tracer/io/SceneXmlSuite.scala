@@ -447,3 +447,24 @@ class SceneXmlSuite extends munit.FunSuite:
       SceneError(Some(12), "sphere", "radius must be greater than 0, got -1").describe,
       "line 12: <sphere>: radius must be greater than 0, got -1"
     )
+
+  test("numbers: exactly the decimals of the format, nothing else"):
+    for good <- List("1", "-1", "+2", "0.25", ".5", "5.", "2.5e-3", "1E+2", "-0.0", "007") do
+      assert(Decimal.matches(good), good)
+    for bad <- List(
+        "",
+        "+",
+        "-",
+        ".",
+        "e3",
+        "1e",
+        "1e+",
+        "1.2.3",
+        "0x10",
+        "NaN",
+        "Infinity",
+        "1 2",
+        "1f",
+        "--1"
+      )
+    do assert(!Decimal.matches(bad), bad)
