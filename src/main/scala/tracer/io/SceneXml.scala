@@ -1,7 +1,6 @@
 package tracer.io
 
 import scala.collection.mutable
-import scala.xml.{Elem, Text}
 import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
@@ -20,7 +19,8 @@ object SceneXml:
     * textures and meshes are read through `sources`, each distinct file once.
     */
   def parse(text: String, sources: SceneSources): Either[SceneError, Scene] =
-    XmlDocument.parse(text).flatMap(doc => SceneReader(doc, sources).scene)
+    val reader = SceneReader(sources)
+    XmlDocument.read(text, reader).flatMap(_ => reader.scene)
 
   /** Parses a scene document whose textures come from `loadTexture` (meshes from files relative
     * to the working directory).
@@ -30,7 +30,8 @@ object SceneXml:
 
   /** Parses a scene document from its bytes (the encoding comes from its XML declaration). */
   def parse(bytes: Array[Byte], sources: SceneSources): Either[SceneError, Scene] =
-    XmlDocument.parse(bytes).flatMap(doc => SceneReader(doc, sources).scene)
+    val reader = SceneReader(sources)
+    XmlDocument.read(bytes, reader).flatMap(_ => reader.scene)
 
   /** Reads the scene file `path`, its textures and meshes resolved against `base` (by default
     * the working directory, as the command line does).
@@ -44,45 +45,55 @@ object SceneXml:
       catch case e: java.io.IOException => Left(s"cannot read $path: $e")
     bytes.flatMap(b => parse(b, SceneSources.files(base)).left.map(e => s"$path: ${e.describe}"))
 
-/** One element of the document with its line, for messages. */
-private final case class Element(node: Elem, line: Option[Int]):
-  /** The element's name. */
-  def name: String = node.label
-
-  /** An error about this element. */
-  def error(message: String): SceneError = SceneError(line, name, message)
-
-  /** A failed result with an error about this element. */
-  def fail[A](message: String): Either[SceneError, A] = Left(error(message))
-
-  /** The raw text of attribute `key`, if present. */
-  def attribute(key: String): Option[String] =
-    // Perf: the value's own text, without building a NodeSeq per lookup.
-    Option(node.attributes(key)).map {
-      case text: Text => text.data
-      case other      => other.text
-    }
-
-/** Walks one parsed document and builds the scene, stopping at the first error. */
-private final class SceneReader(doc: XmlDocument, sources: SceneSources):
+/** Builds the scene from the document's elements as they stream past, stopping at the first
+  * error in document order.
+  */
+private final class SceneReader(sources: SceneSources) extends XmlVisitor:
   import Decimal.show
   private type Result[A] = Either[SceneError, A]
   private val textures = mutable.Map.empty[String, Result[Texture]]
 
-  /** The scene the document describes, or its first error. */
+  // Perf: the parts found so far, gathered as each child of <scene> ends; nothing else of the
+  // document is kept (docs/performance.md, loading big scenes).
+  private var document: Option[Element] = None
+  private var found: Option[Camera]     = None
+  private var backdrop: Option[Colour]  = None
+  private val lights                    = Vector.newBuilder[Light]
+  private val objects                   = Vector.newBuilder[SceneObject]
+
+  /** The `<scene>` element: the right name, no attributes. */
+  def root(e: Element): Result[Unit] =
+    document = Some(e)
+    if e.name != "scene" then e.fail("the root element must be <scene>")
+    else
+      unknownAttribute(e, Vocabulary.None).fold(Right(()))(key => e.fail(s"unknown attribute $key"))
+
+  /** A child of `<scene>`, read into the scene's parts. */
+  def child(e: Element): Result[Unit] = e.name match
+    case "camera" =>
+      if found.isDefined then e.fail("<scene> may have only one <camera>")
+      else camera(e).map(c => found = Some(c))
+    case "background" =>
+      if backdrop.isDefined then e.fail("<scene> may have only one <background>")
+      else colour(e, 1).map(c => backdrop = Some(c))
+    case "light"                         => light(e).map(lights += _)
+    case name if Vocabulary.Shapes(name) => sceneObjects(e).map(objects ++= _)
+    case _                               => e.fail("unknown element inside <scene>")
+
+  /** Text between the children of `<scene>`: an error at its own line. */
+  def rootText(text: StrayText): Result[Unit] =
+    Left(SceneError(text.line, "scene", s"unexpected text '${text.text.take(20)}'"))
+
+  /** The end of the document: there must have been a camera. */
+  def end(): Result[Unit] = scene.map(_ => ())
+
+  /** The scene the document described, once it has been read whole. */
   def scene: Result[Scene] =
-    val root = element(doc.root)
-    for
-      _ <- if root.name == "scene" then Right(()) else root.fail("the root element must be <scene>")
-      children <- contents(root, attributes = Vocabulary.None, children = Vocabulary.SceneChildren)
-      camera   <- exactlyOne(root, children, "camera").flatMap(camera)
-      background <- atMostOne(root, children, "background").flatMap(
-        _.fold(Right(Colour.Black))(colour(_, 1))
-      )
-      lights  <- traverse(children.filter(_.name == "light"))(light)
-      objects <- traverse(children.filter(c => Vocabulary.Shapes(c.name)))(sceneObjects)
-        .map(_.flatten)
-    yield Scene(camera, background, lights, objects)
+    (document, found) match
+      case (Some(_), Some(camera)) =>
+        Right(Scene(camera, backdrop.getOrElse(Colour.Black), lights.result(), objects.result()))
+      case (Some(root), None) => root.fail("missing <camera>")
+      case (None, _)          => Left(SceneError(None, "", "the document has no root element"))
 
   private def camera(e: Element): Result[Camera] =
     for
@@ -367,33 +378,24 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       attributes: Set[String],
       children: Set[String]
   ): Result[List[Element]] =
-    // The first unknown attribute in alphabetical order, so the message does not depend on the
-    // parser's attribute order.
-    val unknownAttribute = e.node.attributes.iterator.map(_.key).filterNot(attributes).minOption
-    val strayText        = e.node.child.collectFirst {
-      case t: Text if !t.text.isBlank => t
-    }
-    val elements = e.node.child.collect { case c: Elem => element(c) }.toList
-    unknownAttribute match
+    val elements = e.children
+    unknownAttribute(e, attributes) match
       case Some(key) => e.fail(s"unknown attribute $key")
       case None      =>
-        strayText match
+        e.strayText match
           case Some(text) =>
             // The error names the line of the text itself, not of its element.
             Left(
               SceneError(
-                doc.lineOf(text).orElse(e.line),
+                text.line.orElse(e.line),
                 e.name,
-                s"unexpected text '${text.text.trim.take(20)}'"
+                s"unexpected text '${text.text.take(20)}'"
               )
             )
           case None =>
             elements.find(c => !children(c.name)) match
               case Some(c) => c.fail(s"unknown element inside <${e.name}>")
               case None    => Right(elements)
-
-  private def exactlyOne(owner: Element, children: List[Element], name: String): Result[Element] =
-    atMostOne(owner, children, name).flatMap(required(owner, _, s"<$name>"))
 
   /** The one child named by any of `names` (aliases), if there is one; two is an error. */
   private def atMostOne(
@@ -428,7 +430,11 @@ private final class SceneReader(doc: XmlDocument, sources: SceneSources):
       case Some(v)          => e.fail(s"attribute $key must be greater than 0, got ${show(v)}")
     }
 
-  private def element(node: Elem): Element = Element(node, doc.lineOf(node))
+  /** The first attribute of `e` not among `allowed`, in alphabetical order (so the message does
+    * not depend on the parser's attribute order).
+    */
+  private def unknownAttribute(e: Element, allowed: Set[String]): Option[String] =
+    e.attributes.keysIterator.filterNot(allowed).minOption
 
   /** `f` applied to each item in order, stopping at the first error. */
   private def traverse[A, B](items: List[A])(f: A => Result[B]): Result[List[B]] =

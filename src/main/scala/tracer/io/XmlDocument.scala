@@ -1,44 +1,80 @@
 package tracer.io
 
 import java.io.{ByteArrayInputStream, StringReader}
-import java.util.IdentityHashMap
 import javax.xml.parsers.SAXParserFactory
+import org.xml.sax.helpers.DefaultHandler
 import org.xml.sax.{Attributes, InputSource, Locator, SAXException, SAXParseException}
-import scala.xml.parsing.NoBindingFactoryAdapter
-import scala.xml.{Elem, MetaData, NamespaceBinding, Node, Text}
+import scala.collection.mutable.ListBuffer
 
-/** An XML document parsed safely, with the line of every element's start tag and of the first
-  * non-blank character of every text between elements.
+/** One element of a scene document, as much of it as the scene reader needs.
   *
-  * @param root the document element
-  * @param lines where each element or text starts, by identity
+  * @param name       the element's name
+  * @param attributes its attributes, by name
+  * @param children   its child elements, in document order
+  * @param strayText  the first text inside it that is not blank, if any (the format has none)
+  * @param line       the line of its start tag
   */
-final class XmlDocument private (val root: Elem, lines: IdentityHashMap[Node, Int]):
+private[io] final case class Element(
+    name: String,
+    attributes: Map[String, String],
+    children: List[Element],
+    strayText: Option[StrayText],
+    line: Option[Int]
+):
+  /** An error about this element. */
+  def error(message: String): SceneError = SceneError(line, name, message)
 
-  /** The line of `node`'s start tag, or of a text node's first non-blank character, if it came
-    * from this document.
-    */
-  def lineOf(node: Node): Option[Int] = Option(lines.get(node))
+  /** A failed result with an error about this element. */
+  def fail[A](message: String): Either[SceneError, A] = Left(error(message))
 
-/** Parses XML with scala-xml and a hardened SAX parser. */
-object XmlDocument:
+  /** The raw text of attribute `key`, if present. */
+  def attribute(key: String): Option[String] = attributes.get(key)
 
-  /** Parses `text`, refusing any `<!DOCTYPE>` before anything in it is expanded or fetched. */
-  def parse(text: String): Either[SceneError, XmlDocument] = parse(InputSource(StringReader(text)))
+/** Text found between elements, trimmed (and cut short), with the line where it starts. */
+private[io] final case class StrayText(text: String, line: Option[Int])
 
-  /** Parses the bytes of a document, honouring the encoding its XML declaration names. */
-  def parse(bytes: Array[Byte]): Either[SceneError, XmlDocument] =
-    parse(InputSource(ByteArrayInputStream(bytes)))
+/** What a scene document is read into, element by element, as the parser streams it. Each call
+  * returns an error to stop reading, the first one found in document order.
+  */
+private[io] trait XmlVisitor:
+  /** The document element's start tag (its children and text still to come). */
+  def root(element: Element): Either[SceneError, Unit]
 
-  private def parse(source: InputSource): Either[SceneError, XmlDocument] =
-    val adapter = LineRecordingAdapter()
+  /** A child of the document element, whole, as soon as its end tag is read. */
+  def child(element: Element): Either[SceneError, Unit]
+
+  /** Text between the document element's children that is not blank. */
+  def rootText(text: StrayText): Either[SceneError, Unit]
+
+  /** The end of the document. */
+  def end(): Either[SceneError, Unit]
+
+/** Reads XML with the JDK's SAX parser, hardened, as a stream: the document element's children
+  * are handed over one by one and then forgotten, so a big scene is never held as a whole tree
+  * (docs/performance.md, loading big scenes).
+  */
+private[io] object XmlDocument:
+
+  /** Reads `text`, refusing any `<!DOCTYPE>` before anything in it is expanded or fetched. */
+  def read(text: String, visitor: XmlVisitor): Either[SceneError, Unit] =
+    read(InputSource(StringReader(text)), visitor)
+
+  /** Reads the bytes of a document, honouring the encoding its XML declaration names. */
+  def read(bytes: Array[Byte], visitor: XmlVisitor): Either[SceneError, Unit] =
+    read(InputSource(ByteArrayInputStream(bytes)), visitor)
+
+  private def read(source: InputSource, visitor: XmlVisitor): Either[SceneError, Unit] =
+    val handler = StreamingHandler(visitor)
     try
-      val document = adapter.loadDocument(source, hardenedReader())
-      document.docElem match
-        case root: Elem => Right(XmlDocument(root, adapter.lines))
-        case _          => Left(SceneError(None, "", "the document has no root element"))
+      val reader = hardenedReader()
+      reader.setContentHandler(handler)
+      reader.setErrorHandler(handler)
+      reader.parse(source)
+      visitor.end()
     catch
-      case e: SAXParseException =>
+      case Stop(error)                            => Left(error)
+      case e: SAXException if stopped(e).nonEmpty => Left(stopped(e).get)
+      case e: SAXParseException                   =>
         val line    = Option(e.getLineNumber).filter(_ > 0)
         val text    = Option(e.getMessage).getOrElse("malformed XML")
         val message =
@@ -60,55 +96,91 @@ object XmlDocument:
     factory.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false)
     factory.newSAXParser().getXMLReader
 
-  /** scala-xml's tree builder, noting the line of each start tag and of the first non-blank
-    * character of each text as the SAX locator reports them.
+  /** The visitor's error, when the parser wrapped the [[Stop]] that carried it. */
+  private def stopped(e: Throwable): Option[SceneError] =
+    Iterator
+      .iterate[Throwable](e)(t => t.getCause)
+      .takeWhile(_ != null)
+      .take(10)
+      .collectFirst { case Stop(error) => error }
+
+  /** Carries the visitor's error out of the parser's callbacks. */
+  private final case class Stop(error: SceneError) extends Exception(null, null, false, false)
+
+  /** The most of a stray text kept for its message. */
+  private val StrayTextKept = 64
+
+  /** Builds each child of the document element as a small tree, with the line of every start tag
+    * and of every stray text, and hands it to the visitor when it ends.
+    *
+    * Perf: mutable builders, one per open element, never seen outside this handler.
     */
-  private final class LineRecordingAdapter extends NoBindingFactoryAdapter:
-    val lines: IdentityHashMap[Node, Int] = IdentityHashMap()
-    private var locator: Option[Locator]  = None
-    private var openLines: List[Int]      = Nil
-    private var textLine: Option[Int]     = None
+  private final class StreamingHandler(visitor: XmlVisitor) extends DefaultHandler:
+    private var locator: Option[Locator] = None
+    private var open: List[Open]         = Nil
 
-    /** Notes where the text gathered so far first shows a non-blank character: the locator
-      * stands at the end of the chunk, so count back the line breaks after that character.
-      */
-    override def characters(ch: Array[Char], start: Int, length: Int): Unit =
-      if textLine.isEmpty then
-        val first = (start until start + length).find(i => !Character.isWhitespace(ch(i)))
-        first.foreach { i =>
-          val breaksAfter = (i until start + length).count(ch(_) == '\n')
-          textLine = locator.map(_.getLineNumber - breaksAfter).filter(_ > 0)
-        }
-      super.characters(ch, start, length)
-
-    override def createText(text: String): Text =
-      val node = super.createText(text)
-      textLine.foreach(line => lines.put(node, line))
-      textLine = None
-      node
+    /** An element whose end tag is still to come. */
+    private final class Open(
+        val name: String,
+        val attributes: Map[String, String],
+        val line: Option[Int]
+    ):
+      val children                 = ListBuffer.empty[Element]
+      var stray: Option[StrayText] = None
+      var text: StringBuilder      = null // the stray text being gathered, from its first letter
+      var textLine: Option[Int]    = None
 
     override def setDocumentLocator(l: Locator): Unit = locator = Some(l)
 
-    override def startElement(
-        uri: String,
-        local: String,
-        qname: String,
-        attributes: Attributes
-    ): Unit =
-      openLines = locator.fold(0)(_.getLineNumber) :: openLines
-      super.startElement(uri, local, qname, attributes)
+    override def startElement(uri: String, local: String, qname: String, attrs: Attributes): Unit =
+      settleText()
+      val attributes =
+        (0 until attrs.getLength).map(i => attrs.getQName(i) -> attrs.getValue(i)).toMap
+      val element = Open(qname, attributes, locator.map(_.getLineNumber).filter(_ > 0))
+      if open.isEmpty then check(visitor.root(Element(qname, attributes, Nil, None, element.line)))
+      open = element :: open
 
-    override def createNode(
-        prefix: String,
-        label: String,
-        attributes: MetaData,
-        scope: NamespaceBinding,
-        children: List[Node]
-    ): Elem =
-      val element = super.createNode(prefix, label, attributes, scope, children)
-      openLines match
-        case line :: rest =>
-          if line > 0 then lines.put(element, line)
-          openLines = rest
-        case Nil => ()
-      element
+    override def endElement(uri: String, local: String, qname: String): Unit =
+      settleText()
+      val closing = open.head
+      open = open.tail
+      val element = Element(
+        closing.name,
+        closing.attributes,
+        closing.children.toList,
+        closing.stray,
+        closing.line
+      )
+      open match
+        case Nil         => ()
+        case _ :: Nil    => check(visitor.child(element)) // a child of the root: handed over
+        case parent :: _ => parent.children += element
+
+    /** Gathers the first non-blank text of the innermost open element. The locator stands at the
+      * end of the chunk, so the text's line counts back the line breaks after its first letter.
+      */
+    override def characters(ch: Array[Char], start: Int, length: Int): Unit =
+      open.headOption.filter(_.stray.isEmpty).foreach { element =>
+        val end = start + length
+        if element.text == null then
+          var i = start
+          while i < end && Character.isWhitespace(ch(i)) do i += 1
+          if i < end then
+            element.text = StringBuilder()
+            element.textLine = locator.map(_.getLineNumber - (i until end).count(ch(_) == '\n'))
+            element.text.appendAll(ch, i, Math.min(end - i, StrayTextKept))
+        else if element.text.length < StrayTextKept then
+          element.text.appendAll(ch, start, Math.min(length, StrayTextKept - element.text.length))
+      }
+
+    /** Ends the text gathered since the last tag: the first such text is the element's stray text. */
+    private def settleText(): Unit =
+      open.headOption.filter(_.text != null).foreach { element =>
+        val stray = StrayText(element.text.toString.trim, element.textLine.filter(_ > 0))
+        element.text = null
+        element.stray = Some(stray)
+        if open.tail.isEmpty then check(visitor.rootText(stray))
+      }
+
+    private def check(result: Either[SceneError, Unit]): Unit =
+      result.left.foreach(error => throw Stop(error))

@@ -23,9 +23,6 @@ class SceneLoadBench:
     document = SceneWriter.write(BenchScenes.scene("mesh-20000")).getBytes(UTF_8)
     println(s"\nSceneLoadBench: the document has ${document.length} bytes")
 
-  /** Only the XML parsing, into scala-xml's tree with line numbers. */
-  @Benchmark def parseOnly: AnyRef = tracer.io.XmlDocument.parse(document)
-
   /** Parses the document into a scene. */
   @Benchmark def load: Scene =
     SceneXml
