@@ -13,9 +13,11 @@ import tracer.scene.AreaLight
   * @param stack the BVH walk's scratch space, from `world.newStack()`
   */
 final class Shadows(world: World, stack: Array[Int]):
-  // Perf: the area light's grid of samples, reused for every shading point (a sample is computed
-  // once and shared by the cells that have it as a corner; −1 marks one not yet computed).
-  private val grid = new Array[Double](AreaLight.MaxSamples * AreaLight.MaxSamples)
+  // Perf: the area lights' grid of samples, reused for every shading point (a sample is computed
+  // once and shared by the cells that have it as a corner; −1 marks one not yet computed). Sized
+  // for the scene's largest area light: a Shading is made per row, so a full 64 × 64 grid for a
+  // scene without area lights was 32 KB a row (JFR allocation samples, docs/performance.md).
+  private var grid = new Array[Double](world.largestAreaLight)
 
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
@@ -30,7 +32,9 @@ final class Shadows(world: World, stack: Array[Int]):
     * middle row and column shared when the count is odd); the result is the mean of the four parts.
     */
   def area(from: Vec3, centre: Vec3, light: AreaLight): Double =
-    java.util.Arrays.fill(grid, 0, light.samplesA * light.samplesB, -1.0)
+    val samples = light.samplesA * light.samplesB
+    if grid.length < samples then grid = new Array[Double](samples) // a light not of this world
+    java.util.Arrays.fill(grid, 0, samples, -1.0)
     cell(from, centre, light, 0, 0, light.samplesA - 1, light.samplesB - 1)
 
   private def cell(

@@ -19,6 +19,10 @@ final class World(scene: Scene):
   /** The background colour. */
   val background = scene.background
 
+  /** The most sub-lights of any one area light (0 without area lights). */
+  val largestAreaLight: Int =
+    lights.iterator.flatMap(_.area).map(a => a.samplesA * a.samplesB).maxOption.getOrElse(0)
+
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
   val transmits: Boolean = surfaces.exists(_.transmit > 0)
 
