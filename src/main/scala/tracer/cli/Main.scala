@@ -1,10 +1,10 @@
 package tracer.cli
 
-import java.io.{IOException, InputStream, PrintStream}
-import java.nio.file.{Files, Path}
+import java.io.{InputStream, PrintStream}
+import java.nio.file.Path
 import scala.util.control.NonFatal
 import tracer.image.Bitmap
-import tracer.io.{Images, OutputFile, SceneSources, SceneXml, TextureFiles}
+import tracer.io.{Images, OutputFile}
 import tracer.render.{CameraConfig, Renderer, ShadingMode}
 import tracer.scene.Scene
 
@@ -44,7 +44,7 @@ object Main:
           out.println(line)
           Success
         case Command.Stack(bands, output) =>
-          stack(bands, output, cwd).fold(fail(Failure, _), _ => Success)
+          Stack.write(bands, output, cwd).fold(fail(Failure, _), _ => Success)
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
           render(options, in, err, cwd).fold(
@@ -56,7 +56,7 @@ object Main:
         case Command.Batch(options, list) =>
           batch(options, list, in, out, err, cwd).fold(fail(Failure, _), identity)
         case Command.Size(options) =>
-          val size = scene(options, in, err, cwd).map(cameraConfig(_, options))
+          val size = Inputs.scene(options, in, err, cwd).map(cameraConfig(_, options))
           size.fold(
             fail(Failure, _),
             c =>
@@ -81,7 +81,7 @@ object Main:
     val output                   = cwd.resolve(options.output)
     for
       _     <- OutputFile.checkWritable(output).left.map(failure)
-      scene <- scene(options, in, err, cwd).left.map(failure)
+      scene <- Inputs.scene(options, in, err, cwd).left.map(failure)
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)
@@ -105,11 +105,7 @@ object Main:
       cwd: Path
   ): Either[String, Int] =
     val text =
-      try Right(Files.readString(cwd.resolve(list)))
-      catch
-        case _: java.nio.file.NoSuchFileException =>
-          Left(s"cannot read batch list $list: no such file")
-        case e: IOException => Left(s"cannot read batch list $list: ${e.getMessage}")
+      Inputs.read(cwd.resolve(list), s"batch list $list").map(String(_, "UTF-8"))
     for
       source <- text
       frames <- Batch.parse(source).left.map(why => s"batch list $list: $why")
@@ -124,60 +120,6 @@ object Main:
             true
       }
       if failed == 0 then Success else Failure
-
-  /** The scene, from `-i FILE` or standard input, with its textures and meshes; warnings to `err`. */
-  private def scene(
-      options: Options,
-      in: InputStream,
-      err: PrintStream,
-      cwd: Path
-  ): Either[String, Scene] =
-    sceneBytes(options.input, in, cwd).flatMap { (bytes, where) =>
-      SceneXml
-        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
-        .left
-        .map(e => s"scene: ${e.describe}")
-    }
-
-  /** Writes `output` as the images `bands`, read in order, one below the other (`--stack`). */
-  private def stack(bands: List[String], output: String, cwd: Path): Either[String, Unit] =
-    val target = cwd.resolve(output)
-    for
-      _      <- OutputFile.checkWritable(target)
-      images <- bands.foldLeft[Either[String, List[Bitmap]]](Right(Nil)) { (done, name) =>
-        done.flatMap(list =>
-          TextureFiles.read(cwd.resolve(name)) match
-            case Right(image) => Right(image :: list)
-            case Left(why)    => Left(s"--stack: cannot read $name: $why")
-        )
-      }
-      joined <- images.reverse match
-        case first :: rest
-            if rest.forall(b => b.width == first.width && b.maxval == first.maxval) =>
-          Right(Bitmap.stack(first :: rest))
-        case _ => Left(s"--stack: the images ${bands.mkString(", ")} differ in width or depth")
-      _ <- Images.save(joined, target)
-    yield ()
-
-  /** The scene's bytes and the directory its relative paths resolve against: FILE's own
-    * directory with `-i FILE`, else standard input and the working directory.
-    */
-  private def sceneBytes(
-      input: Option[String],
-      in: InputStream,
-      cwd: Path
-  ): Either[String, (Array[Byte], Path)] =
-    input match
-      case None       => Right((in.readAllBytes(), cwd))
-      case Some(name) =>
-        val file = cwd.resolve(name)
-        try
-          if Files.isDirectory(file) then Left(s"cannot read scene file $name: it is a directory")
-          else Right((Files.readAllBytes(file), file.toAbsolutePath.getParent))
-        catch
-          case _: java.nio.file.NoSuchFileException =>
-            Left(s"cannot read scene file $name: no such file")
-          case e: IOException => Left(s"cannot read scene file $name: ${e.getMessage}")
 
   /** The rows `-R` asks for, which must lie inside the picture's `rows`; all rows without it. */
   private def rowsToRender(band: Option[Range], rows: Int): Either[Problem, Range] =

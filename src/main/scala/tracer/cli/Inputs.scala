@@ -1,0 +1,43 @@
+package tracer.cli
+
+import java.io.{IOException, InputStream, PrintStream}
+import java.nio.file.{Files, NoSuchFileException, Path}
+import tracer.io.{SceneSources, SceneXml}
+import tracer.scene.Scene
+
+/** Where the command's inputs come from: the scene from `-i FILE` or standard input, and files
+  * read whole, each failure one message naming the file.
+  */
+private[cli] object Inputs:
+
+  /** The scene, from `-i FILE` or standard input, with its textures and meshes; warnings to `err`. */
+  def scene(options: Options, in: InputStream, err: PrintStream, cwd: Path): Either[String, Scene] =
+    sceneBytes(options.input, in, cwd).flatMap { (bytes, where) =>
+      SceneXml
+        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
+        .left
+        .map(e => s"scene: ${e.describe}")
+    }
+
+  /** The bytes of `file`, or why it cannot be read, naming it as `what`. */
+  def read(file: Path, what: String): Either[String, Array[Byte]] =
+    try
+      if Files.isDirectory(file) then Left(s"cannot read $what: it is a directory")
+      else Right(Files.readAllBytes(file))
+    catch
+      case _: NoSuchFileException => Left(s"cannot read $what: no such file")
+      case e: IOException         => Left(s"cannot read $what: ${e.getMessage}")
+
+  /** The scene's bytes and the directory its relative paths resolve against: FILE's own
+    * directory with `-i FILE`, else standard input and the working directory.
+    */
+  private def sceneBytes(
+      input: Option[String],
+      in: InputStream,
+      cwd: Path
+  ): Either[String, (Array[Byte], Path)] =
+    input match
+      case None       => Right((in.readAllBytes(), cwd))
+      case Some(name) =>
+        val file = cwd.resolve(name)
+        read(file, s"scene file $name").map((_, file.toAbsolutePath.getParent))
