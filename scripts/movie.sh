@@ -81,7 +81,7 @@ for i in "${!scenes[@]}"; do
   if [ -f "$frame" ] && [ -f "${frame%.png}.time" ] && [ ! "$scene" -nt "$frame" ]; then
     echo "frame $n/$count: $scene (done before, $(cat "${frame%.png}.time") ms)" >&2
   else
-    todo+=("$n"$'\t'"$scene"$'\t'"$frame")
+    todo+=("$n"$'\t'"$scene"$'\t'"$frame"$'\t'-)
   fi
 done
 
@@ -98,7 +98,7 @@ if [ ${#todo[@]} -gt 0 ]; then
   elif $farm; then chunk=$(((${#todo[@]} + 2 * jobs - 1) / (2 * jobs))); [ "$chunk" -le 8 ] || chunk=8
   else chunk=${#todo[@]}; fi
   case "$chunk" in '' | *[!0-9]* | 0) die "MOVIE_CHUNK must be a positive whole number, got '$chunk'" 2 ;; esac
-  # One line a chunk: N, SCENE and FRAME of each of its frames, separated by tabs.
+  # One line a chunk: N, SCENE, FRAME and - (the whole picture) of each of its frames, by tabs.
   chunks=()
   for ((i = 0; i < ${#todo[@]}; i += chunk)); do
     line=$(printf '%s\t' "${todo[@]:i:chunk}")
@@ -110,12 +110,12 @@ if [ ${#todo[@]} -gt 0 ]; then
     # failed chunk is tried again (elsewhere, if another host is free) before the movie is given up.
     options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
     if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
-    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$count" ||
+    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$count" frame ||
       die "the movie stopped because a frame failed; run again to render what is missing"
   else
     for line in "${chunks[@]}"; do
       IFS=$'\t' read -r -a job <<< "$line"
-      "$render_frames" "$tracer" "$count" "${job[@]}" || exit 1
+      "$render_frames" "$tracer" "$count" frame "${job[@]}" || exit 1
     done
   fi
 fi

@@ -9,7 +9,8 @@
 #         paths work (as movie.sh renders frames)
 # OUTPUT  the picture: PNG for .png (any case), binary PPM otherwise, written whole or not at all
 #
-# Each band is rendered by TRACER -t $TRACER_OPTS -R a:b and kept, with its Tracetime, in
+# Each band is rendered by TRACER -t $TRACER_OPTS as -R a:b, in batches (many bands in one tracer
+# process: tracer --batch), and kept, with its Tracetime, in
 # NAME-bands/ beside OUTPUT (NAME.EXT), so a second run after a failure renders only the bands
 # that are missing; bands of an older scene or of other TRACER_OPTS are thrown away first. When
 # every band is rendered the script prints "Total tracetime: N ms" (the sum of the bands' figures)
@@ -95,24 +96,35 @@ for ((k = 0; k < bands; k++)); do
   if [ -f "$band" ] && [ -f "${band%.ppm}.time" ]; then
     echo "band $((k + 1))/$bands: rows $a:$b (done before, $(cat "${band%.ppm}.time") ms)" >&2
   else
-    todo+=("$((k + 1))"$'\t'"$band"$'\t'"$a:$b")
+    todo+=("$((k + 1))"$'\t'"$scene"$'\t'"$band"$'\t'"$a:$b")
   fi
 done
 
-render_band="$here/render-frame.sh"
+# The bands are rendered in batches, as movie.sh renders frames: one tracer process renders a
+# chunk of bands (render-frames.sh, tracer --batch), so the JVM starts, and compiles the tracer's
+# code, once a chunk rather than once a band. Serially all the bands are one chunk; through GNU
+# parallel each chunk is about half a slot's share, so that the bands still even out the slots.
+render_frames="$here/render-frames.sh"
 if [ ${#todo[@]} -gt 0 ]; then
-  if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then
-    # As movie.sh does: a failing band stops new ones, those in flight finish; on hosts a failed
-    # band is tried again (elsewhere, if another host is free) before the picture is given up.
+  farm=false
+  if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then farm=true; fi
+  if $farm; then chunk=$(((${#todo[@]} + 2 * slots - 1) / (2 * slots))); else chunk=${#todo[@]}; fi
+  chunks=()
+  for ((i = 0; i < ${#todo[@]}; i += chunk)); do
+    line=$(printf '%s\t' "${todo[@]:i:chunk}")
+    chunks+=("${line%$'\t'}")
+  done
+  if $farm; then
+    # As movie.sh does: a failing band stops new chunks, those in flight finish; on hosts a failed
+    # chunk is tried again (elsewhere, if another host is free) before the picture is given up.
     options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
     if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
-    printf '%s\n' "${todo[@]}" |
-      parallel "${options[@]}" -q "$render_band" "$tracer" "$scene" {2} {1} "$bands" band -R {3} ||
+    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$bands" band ||
       die "the picture stopped because a band failed; run again to render what is missing"
   else
-    for job in "${todo[@]}"; do
-      IFS=$'\t' read -r n band rows <<< "$job"
-      "$render_band" "$tracer" "$scene" "$band" "$n" "$bands" band -R "$rows" || exit 1
+    for line in "${chunks[@]}"; do
+      IFS=$'\t' read -r -a job <<< "$line"
+      "$render_frames" "$tracer" "$bands" band "${job[@]}" || exit 1
     done
   fi
 fi

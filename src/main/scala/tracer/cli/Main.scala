@@ -93,7 +93,8 @@ object Main:
     yield millis
 
   /** Renders every frame of the batch list `list` in this one process, each as `-i SCENE OUTPUT`
-    * with `options`; with `-t`, prints `Tracetime: N ms OUTPUT` for each. A frame that fails is
+    * (with `-R a:b` when its line gives rows) and `options`; with `-t`, prints
+    * `Tracetime: N ms OUTPUT` for each. A frame that fails is
     * reported as `tracer: SCENE: why` and the others go on; the status is 1 if any failed.
     */
   private def batch(
@@ -111,7 +112,12 @@ object Main:
       frames <- Batch.parse(source).left.map(why => s"batch list $list: $why")
     yield
       val failed = frames.count { frame =>
-        render(options.copy(input = Some(frame.scene), output = frame.output), in, err, cwd) match
+        val one = options.copy(
+          input = Some(frame.scene),
+          output = frame.output,
+          band = frame.band.orElse(options.band)
+        )
+        render(one, in, err, cwd) match
           case Right(millis) =>
             if options.timing then out.println(s"Tracetime: $millis ms ${frame.output}")
             false

@@ -198,3 +198,13 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     assertFailed(run(d, "--batch", "empty.txt")(), 1, "no frames")
     assertFailed(run(d, "--batch", "none.txt")(), 1, "none.txt")
     assertFailed(run(d, "--batch", "list.txt", "out.png")(), 2, "--batch takes no OUTPUT")
+
+  dir.test("--batch: a third column renders that band of the picture, as -R would"): d =>
+    Files.writeString(d.resolve("s.xml"), simple)
+    Files.writeString(d.resolve("list.txt"), "s.xml\ttop.ppm\t0:10\ns.xml\trest.ppm\t10:30\n")
+    assertEquals(run(d, "-x", "40", "--batch", "list.txt")(), Run(0, "", ""))
+    run(d, "-x", "40", "-i", "s.xml", "whole.ppm")()
+    val joined = Bitmap.stack(List("top.ppm", "rest.ppm").map(n => readImage(d.resolve(n))))
+    assertEquals(joined, readImage(d.resolve("whole.ppm")))
+    Files.writeString(d.resolve("bad.txt"), "s.xml\tx.ppm\t3:2\n")
+    assertFailed(run(d, "--batch", "bad.txt")(), 1, "line 1", "-R must be a:b")
