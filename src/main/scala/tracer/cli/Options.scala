@@ -136,7 +136,7 @@ object Options:
         .valueName("d")
         .validate(atLeast("-r", 0))
         .action((v, o) => o.copy(depth = v))
-        .text("reflection depth, the most reflections a ray can make (default 5)"),
+        .text("depth: the most reflections and refractions a ray can make (default 5)"),
       opt[Unit]('t', "time")
         .action((_, o) => o.copy(timing = true))
         .text("print 'Tracetime: N ms', the rendering time, on standard output"),
@@ -203,7 +203,7 @@ object Options:
       opt[String]("batch")
         .valueName("LIST")
         .action((v, o) => o.copy(batch = Some(v)))
-        .text("render every frame of LIST (lines SCENE<TAB>OUTPUT) in one process; no OUTPUT"),
+        .text("render every frame of LIST (lines SCENE<TAB>OUTPUT[<TAB>a:b]) in one process"),
       opt[Unit]("version")
         .action((_, o) => o.copy(version = true))
         .text("print the version and exit"),
