@@ -89,7 +89,6 @@ done
 # (render-frames.sh, tracer --batch), so the JVM starts once a chunk and the later frames run on
 # code the JIT has already compiled. Serially everything is one chunk; through GNU parallel the
 # chunks are small enough to keep every job busy. MOVIE_CHUNK sets the frames a process.
-render_frames="$here/render-frames.sh"
 export TRACER_OPTS="${TRACER_OPTS:-}"
 if [ ${#todo[@]} -gt 0 ]; then
   farm=false
@@ -98,26 +97,12 @@ if [ ${#todo[@]} -gt 0 ]; then
   elif $farm; then chunk=$(((${#todo[@]} + 2 * jobs - 1) / (2 * jobs))); [ "$chunk" -le 8 ] || chunk=8
   else chunk=${#todo[@]}; fi
   case "$chunk" in '' | *[!0-9]* | 0) die "MOVIE_CHUNK must be a positive whole number, got '$chunk'" 2 ;; esac
-  # One line a chunk: N, SCENE, FRAME and - (the whole picture) of each of its frames, by tabs.
-  chunks=()
-  for ((i = 0; i < ${#todo[@]}; i += chunk)); do
-    line=$(printf '%s\t' "${todo[@]:i:chunk}")
-    chunks+=("${line%$'\t'}")
-  done
-  if $farm; then
-    # GNU parallel spreads the chunks over cores and ssh hosts (each column one argument); a
-    # failing frame stops new chunks from starting, and those in flight finish. On hosts, a
-    # failed chunk is tried again (elsewhere, if another host is free) before the movie is given up.
-    options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
-    if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
-    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$count" frame ||
-      die "the movie stopped because a frame failed; run again to render what is missing"
-  else
-    for line in "${chunks[@]}"; do
-      IFS=$'\t' read -r -a job <<< "$line"
-      "$render_frames" "$tracer" "$count" frame "${job[@]}" || exit 1
-    done
-  fi
+  # shellcheck source=scripts/batches.sh
+  . "$here/batches.sh"
+  render_batches "$tracer" "$count" frame "$jobs" "$hosts" "$chunk" "${todo[@]}" || {
+    if $farm; then die "the movie stopped because a frame failed; run again to render what is missing"; fi
+    exit 1
+  }
 fi
 
 # The total: every frame's figure, wherever and whenever it was rendered.

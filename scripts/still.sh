@@ -104,29 +104,16 @@ done
 # chunk of bands (render-frames.sh, tracer --batch), so the JVM starts, and compiles the tracer's
 # code, once a chunk rather than once a band. Serially all the bands are one chunk; through GNU
 # parallel each chunk is about half a slot's share, so that the bands still even out the slots.
-render_frames="$here/render-frames.sh"
 if [ ${#todo[@]} -gt 0 ]; then
   farm=false
   if [ "$jobs" -gt 1 ] || [ -n "$hosts" ]; then farm=true; fi
   if $farm; then chunk=$(((${#todo[@]} + 2 * slots - 1) / (2 * slots))); else chunk=${#todo[@]}; fi
-  chunks=()
-  for ((i = 0; i < ${#todo[@]}; i += chunk)); do
-    line=$(printf '%s\t' "${todo[@]:i:chunk}")
-    chunks+=("${line%$'\t'}")
-  done
-  if $farm; then
-    # As movie.sh does: a failing band stops new chunks, those in flight finish; on hosts a failed
-    # chunk is tried again (elsewhere, if another host is free) before the picture is given up.
-    options=(--will-cite --colsep '\t' --halt soon,fail=1 --jobs "$jobs" --env TRACER_OPTS)
-    if [ -n "$hosts" ]; then options+=(--sshloginfile "$hosts" --retries 3); fi
-    printf '%s\n' "${chunks[@]}" | parallel "${options[@]}" -q "$render_frames" "$tracer" "$bands" band ||
-      die "the picture stopped because a band failed; run again to render what is missing"
-  else
-    for line in "${chunks[@]}"; do
-      IFS=$'\t' read -r -a job <<< "$line"
-      "$render_frames" "$tracer" "$bands" band "${job[@]}" || exit 1
-    done
-  fi
+  # shellcheck source=scripts/batches.sh
+  . "$here/batches.sh"
+  render_batches "$tracer" "$bands" band "$jobs" "$hosts" "$chunk" "${todo[@]}" || {
+    if $farm; then die "the picture stopped because a band failed; run again to render what is missing"; fi
+    exit 1
+  }
 fi
 
 # The total: every band's figure, wherever and whenever it was rendered.
