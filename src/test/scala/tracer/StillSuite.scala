@@ -56,14 +56,7 @@ class StillSuite extends MovieWorkspace:
   private def total(e: Exit): Option[Int] =
     "Total tracetime: (\\d+) ms\n".r.findFirstMatchIn(e.out).map(_.group(1).toInt)
 
-  private def bandTimes(d: Path, name: String): Seq[Int] =
-    Files
-      .list(d.resolve(s"$name-bands"))
-      .iterator
-      .asScala
-      .filter(_.toString.endsWith(".time"))
-      .map(p => Files.readString(p).trim.toInt)
-      .toSeq
+  private def bandTimes(d: Path, name: String): Seq[Int] = times(d.resolve(s"$name-bands"))
 
   workspace.test("serially: the bands joined are the single run's picture, PNG and PPM"): d =>
     val scene = textured(d)

@@ -107,8 +107,12 @@ trait MovieWorkspace extends munit.FunSuite:
     (w, h, n)
 
   protected def frameTimes(d: Path, name: String): Seq[Int] =
+    times(d.resolve(s"my movies/$name-frames"))
+
+  /** The figures of the `.time` files in `dir`, one a finished frame or band. */
+  protected def times(dir: Path): Seq[Int] =
     Files
-      .list(d.resolve(s"my movies/$name-frames"))
+      .list(dir)
       .iterator
       .asScala
       .filter(_.toString.endsWith(".time"))
