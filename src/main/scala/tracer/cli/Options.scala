@@ -115,11 +115,8 @@ object Options:
 
   /** `a:b` with integers 0 ≤ a < b, as the rows a until b; whether b ≤ Y is checked once Y is known. */
   private[cli] def band(text: String): Either[String, Range] =
-    text.split(":", -1) match
-      case Array(a, b) =>
-        (a.toIntOption, b.toIntOption) match
-          case (Some(first), Some(end)) if first >= 0 && first < end => Right(first until end)
-          case _ => Left(s"-R must be a:b with integers 0 <= a < b, got '$text'")
+    text.split(":", -1).map(_.toIntOption) match
+      case Array(Some(first), Some(end)) if first >= 0 && first < end => Right(first until end)
       case _ => Left(s"-R must be a:b with integers 0 <= a < b, got '$text'")
 
   private val parser =

@@ -66,7 +66,9 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
     document = Some(e)
     if e.name != "scene" then e.fail("the root element must be <scene>")
     else
-      unknownAttribute(e, Vocabulary.None).fold(Right(()))(key => e.fail(s"unknown attribute $key"))
+      unknownAttribute(e, Vocabulary.NoNames).fold(Right(()))(key =>
+        e.fail(s"unknown attribute $key")
+      )
 
   /** A child of `<scene>`, read into the scene's parts. */
   def child(e: Element): Result[Unit] = e.name match
@@ -114,7 +116,7 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
 
   private def light(e: Element): Result[Light] =
     for
-      children <- contents(e, Vocabulary.None, Vocabulary.LightChildren)
+      children <- contents(e, Vocabulary.NoNames, Vocabulary.LightChildren)
       location <- requiredVector(e, children, "location")
       colour   <- atMostOne(e, children, "colour", "color").flatMap(
         _.fold(Right(Colour.White))(lightColour)
@@ -223,7 +225,7 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
 
   private def triangle(e: Element): Result[SceneObject] =
     for
-      children     <- contents(e, Vocabulary.None, Vocabulary.TriangleChildren)
+      children     <- contents(e, Vocabulary.NoNames, Vocabulary.TriangleChildren)
       corners      <- traverse(children.filter(_.name == "corner"))(vector)
       legs         <- traverse(List("origin", "a", "b"))(name => atMostOne(e, children, name))
       (t0, t1, t2) <- (corners, legs) match
@@ -305,7 +307,7 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
 
   private def texture(e: Element, owner: Element, texturable: Boolean): Result[Texture] =
     for
-      _ <- contents(e, Vocabulary.TextureAttributes, Vocabulary.None)
+      _ <- contents(e, Vocabulary.TextureAttributes, Vocabulary.NoNames)
       _ <-
         if texturable then Right(())
         else e.fail(s"textures are allowed on spheres and triangles only, not <${owner.name}>")
@@ -322,7 +324,7 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
 
   private def vector(e: Element): Result[Vec3] =
     for
-      _ <- contents(e, Vocabulary.VectorAttributes, Vocabulary.None)
+      _ <- contents(e, Vocabulary.VectorAttributes, Vocabulary.NoNames)
       x <- requiredNumber(e, "x")
       y <- requiredNumber(e, "y")
       z <- requiredNumber(e, "z")
@@ -331,7 +333,7 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
   /** A colour element with channels from 0 to `max`. */
   private def colour(e: Element, max: Double): Result[Colour] =
     for
-      _        <- contents(e, Vocabulary.ColourAttributes, Vocabulary.None)
+      _        <- contents(e, Vocabulary.ColourAttributes, Vocabulary.NoNames)
       channels <- traverse(List("r", "g", "b")) { key =>
         requiredNumber(e, key).flatMap { c =>
           if c >= 0 && c <= max then Right(c)
@@ -449,8 +451,8 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
 
 /** The names each element of the scene format allows: its attributes and its child elements. */
 private object Vocabulary:
-  /** Nothing allowed. */
-  val None: Set[String] = Set()
+  /** No names at all: for an element without attributes, or without children. */
+  val NoNames: Set[String] = Set()
 
   /** The elements that are shapes. */
   val Shapes: Set[String] = Set("sphere", "plane", "triangle", "mesh")
