@@ -1,9 +1,9 @@
 package tracer.demo
 
 import java.util.Locale
-import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.geometry.*
 import tracer.image.Colour
-import tracer.math.Vec3
+import tracer.math.{Placement, Vec3}
 import tracer.render.{CameraConfig, Projection}
 import tracer.scene.*
 
@@ -37,22 +37,67 @@ object PovRay:
     s"light_source { ${vec(l.location)} color rgb ${colour(l.colour)}$area }"
 
   private def sceneObject(o: SceneObject): String =
-    val shape = o.shape match
-      case s: Sphere => s"sphere { ${vec(s.centre)}, ${num(s.radius)}"
-      case p: Plane  => s"plane { ${vec(p.normal)}, ${num(p.distance)}"
-      case t: Triangle if t.cornerNormals.isDefined =>
-        val (n0, n1, n2) = t.cornerNormals.get
-        s"smooth_triangle { ${vec(t.t0)}, ${vec(n0)}, ${vec(t.t1)}, ${vec(n1)}, ${vec(t.t2)}, ${vec(n2)}"
-      case t: Triangle => s"triangle { ${vec(t.t0)}, ${vec(t.t1)}, ${vec(t.t2)}"
-    val f       = o.surface
-    val pigment = f.pigment match
-      case Pigment.Solid(c)    => c
-      case Pigment.Textured(_) => Colour.grey(0.5)
+    val interior = if o.surface.ior != 1 then s" interior { ior ${num(o.surface.ior)} }" else ""
+    shape(o.shape, o, 0, Some(texture(o.surface)), interior)
+
+  /** The twin of `s`, whose first leaf is number `leaf` of `o`'s shape; `texture` is written on it
+    * (before its placement, so that a pattern moves with it), and a child of a combination gets
+    * one of its own only where its surface is not the whole object's.
+    */
+  private def shape(
+      s: Shape,
+      o: SceneObject,
+      leaf: Int,
+      texture: Option[String],
+      interior: String
+  ): String =
+    val t = texture.fold("")(" " + _) + interior
+    s match
+      case s: Sphere    => s"sphere { ${vec(s.centre)}, ${num(s.radius)}$t }"
+      case p: Plane     => s"plane { ${vec(p.normal)}, ${num(p.distance)}$t }"
+      case tr: Triangle =>
+        tr.cornerNormals match
+          case Some((n0, n1, n2)) =>
+            s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}$t }"
+          case None => s"triangle { ${vec(tr.t0)}, ${vec(tr.t1)}, ${vec(tr.t2)}$t }"
+      case b: Box  => s"box { ${vec(b.corner1)}, ${vec(b.corner2)}$t }"
+      case c: Cone =>
+        val open = if c.open then " open" else ""
+        if c.baseRadius == c.capRadius then
+          s"cylinder { ${vec(c.base)}, ${vec(c.cap)}, ${num(c.baseRadius)}$open$t }"
+        else
+          s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$t }"
+      case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$t }"
+      case p: Placed =>
+        val inner = shape(p.shape, o, leaf, texture, interior)
+        inner.dropRight(1) + placement(p.placement) + "}"
+      case c: Csg =>
+        val name = c.operation match
+          case CsgOperation.Union        => "union"
+          case CsgOperation.Intersection => "intersection"
+          case CsgOperation.Difference   => "difference"
+        val children = c.children.indices.map { i =>
+          val first = leaf + c.firstLeaves(i)
+          val own   = o.surfaceOf(first)
+          val mine  = Option.when(own != o.surface)(this.texture(own))
+          shape(c.children(i), o, first, mine, "")
+        }
+        s"$name { ${children.mkString(" ")}$t }"
+
+  private def placement(p: Placement): String =
+    s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "
+
+  private def texture(f: Surface): String =
+    def rgbt(c: Colour) = s"rgbt <${num(c.r)}, ${num(c.g)}, ${num(c.b)}, ${num(f.transmit)}>"
+    val pigment         = f.pigment match
+      case Pigment.Solid(c)    => s"color ${rgbt(c)}"
+      case Pigment.Textured(_) => s"color ${rgbt(Colour.grey(0.5))}"
+      case c: Pigment.Checker  =>
+        s"checker color ${rgbt(c.first)}, color ${rgbt(c.second)} scale ${num(c.size)}"
     val finish = s"finish { ambient 0 diffuse ${num(f.diffuse)} reflection ${num(f.reflection)}" +
       s" phong ${num(f.phong)} phong_size ${num(f.phongSize)}" +
       s" specular ${num(f.specular)} roughness ${num(f.roughness)} }"
-    val interior = if f.ior != 1 then s" interior { ior ${num(f.ior)} }" else ""
-    s"$shape pigment { color rgbt <${num(pigment.r)}, ${num(pigment.g)}, ${num(pigment.b)}, ${num(f.transmit)}> } $finish$interior }"
+    s"texture { pigment { $pigment } $finish }"
 
   private def vec(v: Vec3): String      = s"<${num(v.x)}, ${num(v.y)}, ${num(v.z)}>"
   private def colour(c: Colour): String = s"<${num(c.r)}, ${num(c.g)}, ${num(c.b)}>"
