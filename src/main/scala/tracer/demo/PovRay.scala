@@ -18,8 +18,23 @@ import tracer.scene.*
   */
 object PovRay:
 
-  /** The POV-Ray scene for `scene`, tracing up to `depth` reflections. */
-  def write(scene: Scene, depth: Int = CameraConfig.DefaultDepth): String =
+  /** The POV-Ray scene for `scene`, tracing up to `depth` reflections. With `quick`, the twin of
+    * quick mode (`-q`): one shadowless light at the eye and every surface its plain pigment
+    * with diffuse 1, which POV-Ray shades as colour · |rn · Rd|.
+    */
+  def write(scene: Scene, depth: Int = CameraConfig.DefaultDepth, quick: Boolean = false): String =
+    if !quick then twin(scene, depth, scene.lights.map(light))
+    else
+      val eye  = s"light_source { ${vec(scene.camera.location)} color rgb <1, 1, 1> shadowless }"
+      val flat = scene.objects.map(o =>
+        o.copy(surface = plain(o.surface), leafSurfaces = o.leafSurfaces.map(plain))
+      )
+      twin(scene.copy(objects = flat), depth, Seq(eye))
+
+  /** A surface as quick mode sees it: its pigment alone, diffuse 1. */
+  private def plain(s: Surface): Surface = Surface(diffuse = 1, pigment = s.pigment)
+
+  private def twin(scene: Scene, depth: Int, lights: Seq[String]): String =
     val c                      = scene.camera
     val (right, down, forward) = Projection(c, CameraConfig.forCamera(c)).basis
     val lines                  = Vector(
@@ -27,8 +42,7 @@ object PovRay:
       s"global_settings { assumed_gamma 1 max_trace_level ${depth + 1} adc_bailout 0 ambient_light 0 }",
       s"background { color rgb ${colour(scene.background)} }",
       s"camera { location ${vec(c.location)} direction ${vec(forward * c.zoom)} right ${vec(right * c.width)} up ${vec(down * -c.height)} }"
-    ) ++ scene.lights.map(light) ++
-      scene.objects.map(sceneObject)
+    ) ++ lights ++ scene.objects.map(sceneObject)
     lines.mkString("", "\n", "\n")
 
   private def light(l: Light): String =

@@ -72,7 +72,7 @@ class SceneWriterProperties extends ScalaCheckSuite:
   private def sameScene(a: Scene, b: Scene): Boolean =
     a.copy(objects = Nil) == b.copy(objects = Nil) && a.objects.length == b.objects.length &&
       a.objects.zip(b.objects).forall {
-        case (SceneObject(p: Plane, s), SceneObject(q: Plane, t)) =>
+        case (SceneObject(p: Plane, s, _), SceneObject(q: Plane, t, _)) =>
           s == t && p.distance == q.distance && (p.normal - q.normal).length < 1e-15
         case (x, y) => x == y
       }
