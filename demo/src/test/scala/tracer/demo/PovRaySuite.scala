@@ -1,9 +1,9 @@
-package tracer.cli
+package tracer.demo
 
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.file.{Files, Path}
 import java.util.concurrent.TimeUnit
-import tracer.demo.{BenchScenes, Models, PovRay}
+import tracer.cli.Main
 import tracer.image.{Bitmap, Ppm}
 import tracer.io.{SceneWriter, SceneXml}
 
