@@ -11,12 +11,14 @@ then applies the project's rules for what a finding may stand on:
     dropped. These words are reserved in Scala (or, for the casts, members no one else names), so
     a token scan is exact where semgrep's Scala parser is not (it reads a `val` as a variable).
   - `var`, `while` and `throw` stand where a `// Why: …` or `// Perf: …` comment covers them.
-    A comment covers the statement it ends (a trailing comment) or stands above (a comment on
-    lines of its own): that statement's first line and every following line indented deeper, up
-    to the next line at the statement's indentation or less that does not continue it (one
-    starting with `)`, `]`, `}`, `.`, `else`, `then`, `do`, `yield`, `catch`, `finally` or `end`).
-    Blank and comment lines in between do not end it. So one comment above a short hot loop, or
-    above the method that holds it, covers the loop's counters and the loop.
+    A comment on lines of its own, indented k, covers the paragraph below it: the following
+    lines indented k up to the first blank line, the next comment at indentation k, or a line
+    indented less than k; and with them every line indented deeper than k beneath them (the
+    bodies of those statements, blank lines inside included). A trailing comment covers its line
+    and the lines indented deeper beneath it (up to a line indented as much or less that does not
+    continue it: one starting with `)`, `]`, `}`, `.`, `else`, `then`, `do`, `yield`, `catch`,
+    `finally` or `end`). So one comment above a short hot loop covers its counters and the loop,
+    and one above a method covers the method.
   - Any finding stands where `// nosemgrep: RULE-ID — reason` (several ids: comma-separated;
     `--` or `-` for the dash) is on its first line or the line above. A suppression without a
     reason, or one that suppresses nothing, is itself a finding.
@@ -118,6 +120,7 @@ def is_comment_or_blank(stripped):
 def why_comments(lines):
     """The `// Why:`/`// Perf:` comments of a file: (line, reason, set of covered lines), 1-based."""
     found = []
+    n = len(lines)
     for i, line in enumerate(lines):
         m = WHY.search(line)
         if not m:
@@ -125,26 +128,40 @@ def why_comments(lines):
         before = line[: m.start()]
         if before.strip().startswith(("*", "/*")) or before.count('"') % 2 == 1:
             continue  # inside a block comment or a string
+        k = indent(line)
         covered = {i + 1}
-        trailing = before.strip() != ""
-        start = i if trailing else None
         j = i + 1
-        if not trailing:
-            while j < len(lines) and is_comment_or_blank(lines[j].strip()):
-                covered.add(j + 1)
-                j += 1
-            start = j
-            covered.add(j + 1)
-            j += 1
-        if start < len(lines):
-            k = indent(lines[start])
-            while j < len(lines):
+        text = m.group(2)
+        if before.strip():
+            # A trailing comment: its line and the lines indented deeper beneath it.
+            while j < n:
                 s = lines[j].strip()
-                if not is_comment_or_blank(s) and indent(lines[j]) <= k and not CONTINUES.match(s):
+                if s and indent(lines[j]) <= k and not CONTINUES.match(s):
                     break
                 covered.add(j + 1)
                 j += 1
-        found.append((i + 1, m.group(1) + ": " + m.group(2), covered))
+        else:
+            # A comment of its own: the rest of it (which continues the reason), then its paragraph.
+            reason = [m.group(2)]
+            while j < n and lines[j].strip().startswith("//"):
+                reason.append(lines[j].strip()[2:].strip())
+                covered.add(j + 1)
+                j += 1
+            text = " ".join(reason)
+            blank = False
+            while j < n:
+                s = lines[j].strip()
+                if not s:
+                    blank = True
+                elif indent(lines[j]) < k:
+                    break
+                elif indent(lines[j]) == k:
+                    if blank or s.startswith(("//", "/*")):
+                        break
+                    blank = False
+                covered.add(j + 1)
+                j += 1
+        found.append((i + 1, m.group(1) + ": " + text, covered))
     return found
 
 
@@ -300,7 +317,7 @@ def doc_section(suppressed, allowed, pending):
     for rule in sorted(set(by_rule) | set(by_rule_pending)):
         out.append(f"| `{rule}` | {by_rule[rule]} | {by_rule_pending[rule]} |")
     out += ["", "Every comment that lets a finding stand, with what it covers:", "",
-            "| file | line of the comment | covers | reason |", "|---|---|---|---|"]
+            "| file | comment | covers | reason |", "|---|---|---|---|"]
     rows = OrderedDict()
     for f, cover in allowed:
         rows.setdefault((f.path, cover[0], cover[1]), Counter())[f.rule] += 1
@@ -308,7 +325,7 @@ def doc_section(suppressed, allowed, pending):
         rows.setdefault((f.path, None, reason), Counter())[f.rule] += 1
     for (path, at, reason), rules in sorted(rows.items(), key=lambda kv: (kv[0][0], kv[0][1] or 0)):
         covers = ", ".join(f"{n} × `{r}`" for r, n in sorted(rules.items()))
-        where = "nosemgrep" if at is None else "Why/Perf comment"
+        where = "`nosemgrep`" if at is None else "`" + reason.split(":")[0] + ":`"
         out.append(f"| `{path}` | {where} | {covers} | {reason.replace('|', '/')} |")
     if pending:
         out += ["", "Waiting for their owners (files being rewritten today; `lint/pending.txt`):", "",
@@ -340,16 +357,17 @@ def main(argv):
 
     open_, suppressed, allowed, problems, warnings = analyse(semgrep, root, paths)
 
-    pending_entries = read_pending(root) if whole_tree else []
-    waiting, still_open, matched = [], [], set()
+    # Entries are counted: two equal lines with the same finding need two entries.
+    left = Counter(read_pending(root) if whole_tree else [])
+    waiting, still_open = [], []
     for f in open_:
-        if f.key() in pending_entries:
+        if left[f.key()] > 0:
+            left[f.key()] -= 1
             waiting.append(f)
-            matched.add(f.key())
         else:
             still_open.append(f)
-    for entry in pending_entries:
-        if entry not in matched:
+    for entry, n in sorted(left.items()):
+        for _ in range(n):
             problems.append(f"{PENDING}: no finding matches this entry any more, remove it:"
                             f" {entry[0]} {entry[1]} {entry[2]}")
 

@@ -15,7 +15,7 @@ final class Progress private (out: PrintStream, totalRows: Int, timer: Scheduled
   def rowDone(): Unit = done.incrementAndGet()
 
   private def draw(): Unit =
-    val rows = done.get
+    val rows = done.get()
     out.print(s"\rtracer: rendering ${100L * rows / totalRows}% ($rows of $totalRows rows)")
     out.flush()
 

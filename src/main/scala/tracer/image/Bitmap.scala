@@ -60,6 +60,7 @@ final class Bitmap private (
 
   private def offset(x: Int, y: Int): Int =
     if !contains(x, y) then
+      // Why: a pixel outside the bitmap is a caller's bug, as for an array index.
       throw IndexOutOfBoundsException(s"pixel ($x, $y) is outside a $width×$height bitmap")
     3 * (y * width + x)
 
@@ -126,6 +127,7 @@ object Bitmap:
   private[image] def samplesOf(bitmap: Bitmap): Array[Char] = bitmap.samples
 
   private def allocate(width: Int, height: Int, maxval: Int): Array[Char] =
+    // Why: every caller has checked the size (`checkSize`); a bad one is a bug, as with require.
     checkSize(width, height).fold(msg => throw IllegalArgumentException(msg), identity)
     require(maxval >= 1 && maxval <= 65535, s"maxval must be 1..65535, got $maxval")
     new Array[Char](3 * width * height)

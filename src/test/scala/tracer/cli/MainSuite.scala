@@ -3,6 +3,7 @@ package tracer.cli
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
+import scala.jdk.CollectionConverters.*
 import tracer.image.{Bitmap, Colour, Ppm}
 import tracer.testkit.Images
 
@@ -45,7 +46,7 @@ class MainSuite extends munit.FunSuite with Images:
     expected.foreach(e => assert(r.err.contains(e), s"'${r.err.trim}' does not mention '$e'"))
 
   private def assertNoFilesBut(d: Path, names: String*)(using munit.Location): Unit =
-    val present = Files.list(d).toArray.toList.map(_.asInstanceOf[Path].getFileName.toString)
+    val present = Files.list(d).toList.asScala.toList.map(_.getFileName.toString)
     assertEquals(present.sorted, names.toList.sorted)
 
   private val samples = List(

@@ -92,6 +92,6 @@ object ProceduralTextures:
 
   /** A fixed pseudo-random value in 0..1 for each integer lattice point (an integer hash). */
   private def lattice(x: Int, y: Int, z: Int): Double =
-    var h = x * 374761393 + y * 668265263 + z * 1274126177
-    h = (h ^ (h >>> 13)) * 1274126177
+    val h0 = x * 374761393 + y * 668265263 + z * 1274126177
+    val h  = (h0 ^ (h0 >>> 13)) * 1274126177
     ((h ^ (h >>> 16)) & 0xffffff).toDouble / 0xffffff
