@@ -8,8 +8,18 @@ ThisBuild / scalacOptions ++= Seq(
   "-feature",
   "-unchecked",
   "-Wunused:all",
+  // The compiler's own analysis (docs/analysis.md): objects read before they are initialised,
+  // values discarded where Unit is expected, and statements whose value is dropped.
+  "-Wsafe-init",
+  "-Wvalue-discard",
+  "-Wnonunit-statement",
+  // Until their owners fix them (docs/analysis.md): the only such findings left, in files being
+  // rewritten on other branches, are reported as information. Remove these lines then.
+  "-Wconf:src=src/main/scala/tracer/(io/OutputFile|render/Bvh|render/Renderer)\\.scala&id=E175:i",
+  "-Wconf:src=src/main/scala/tracer/(io/OutputFile|render/Bvh|render/Renderer)\\.scala&id=E176:i",
   "-Werror"
 )
+
 
 lazy val root = project
   .in(file("."))
@@ -23,6 +33,9 @@ lazy val root = project
       "org.scalacheck"         %% "scalacheck"       % "1.19.0" % Test
     ),
     Compile / mainClass := Some("tracer.cli.Main"),
+    // munit registers each test from the suite's constructor, which -Wsafe-init cannot follow
+    // (it flags test bodies as reading a half-built suite); the tests keep the other checks.
+    Test / scalacOptions -= "-Wsafe-init",
     // tracer.BuildInfo: the build's version, for `tracer --version`.
     Compile / sourceGenerators += Def.task {
       val file = (Compile / sourceManaged).value / "tracer" / "BuildInfo.scala"
@@ -63,6 +76,7 @@ lazy val demo = project
     publish / skip := true,
     // scripts/bench.sh puts this jar beside tracer.jar on a classpath.
     Compile / packageBin / artifactPath := baseDirectory.value / "target" / "tracer-demo.jar",
+    Test / scalacOptions -= "-Wsafe-init", // as in the root module
     Test / fork                         := true,
     Test / baseDirectory                := (ThisBuild / baseDirectory).value,
     Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),

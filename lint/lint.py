@@ -60,21 +60,24 @@ NOSEM = re.compile(r"//\s*nosemgrep\b:?\s*([\w.,\s-]*?)(?:\s+(?:—|--|-)\s+(\S.
 CONTINUES = re.compile(r"^(\)|\]|\}|\.|else\b|then\b|do\b|yield\b|catch\b|finally\b|end\b)")
 
 
-def code_mask(text):
-    """For each character of a Scala source: True where it is code, False in comments and strings."""
-    mask = [True] * len(text)
+CODE, COMMENT, STRING = 0, 1, 2
+
+
+def kinds(text):
+    """For each character of a Scala source: CODE, COMMENT or STRING (a literal)."""
+    kind = [CODE] * len(text)
     i, n = 0, len(text)
 
-    def blank(a, b):
-        for k in range(a, min(b, n)):
-            mask[k] = False
+    def mark(a, b, k):
+        for j in range(a, min(b, n)):
+            kind[j] = k
 
     while i < n:
         c = text[i]
         if text.startswith("//", i):
             j = text.find("\n", i)
             j = n if j < 0 else j
-            blank(i, j)
+            mark(i, j, COMMENT)
             i = j
         elif text.startswith("/*", i):
             depth, j = 1, i + 2
@@ -85,28 +88,28 @@ def code_mask(text):
                     depth, j = depth - 1, j + 2
                 else:
                     j += 1
-            blank(i, j)
+            mark(i, j, COMMENT)
             i = j
         elif text.startswith('"""', i):
             j = text.find('"""', i + 3)
             j = n if j < 0 else j + 3
             while j < n and text[j] == '"':  # a string may end in quotes: """a""""
                 j += 1
-            blank(i, j)
+            mark(i, j, STRING)
             i = j
         elif c == '"':
             j = i + 1
             while j < n and text[j] != '"' and text[j] != "\n":
                 j += 2 if text[j] == "\\" else 1
-            blank(i, j + 1)
+            mark(i, j + 1, STRING)
             i = j + 1
         elif c == "'" and re.match(r"'(\\u[0-9a-fA-F]{4}|\\.|[^\\'\n])'", text[i:i + 8]):
             j = text.index("'", i + 2 if text[i + 1] == "\\" else i + 1)
-            blank(i, j + 1)
+            mark(i, j + 1, STRING)
             i = j + 1
         else:
             i += 1
-    return mask
+    return kind
 
 
 def indent(line):
@@ -117,17 +120,26 @@ def is_comment_or_blank(stripped):
     return stripped == "" or stripped.startswith(("//", "/*", "*"))
 
 
-def why_comments(lines):
+def line_comment(lines, kind, starts, i):
+    """Where line i's `//` comment starts (an index into the line), or None."""
+    at = lines[i].find("//")
+    while at >= 0:
+        if kind[starts[i] + at] == COMMENT and (at == 0 or kind[starts[i] + at - 1] != COMMENT):
+            return at
+        at = lines[i].find("//", at + 1)
+    return None
+
+
+def why_comments(lines, kind, starts):
     """The `// Why:`/`// Perf:` comments of a file: (line, reason, set of covered lines), 1-based."""
     found = []
     n = len(lines)
     for i, line in enumerate(lines):
-        m = WHY.search(line)
+        at = line_comment(lines, kind, starts, i)
+        m = WHY.match(line, at) if at is not None else None
         if not m:
             continue
         before = line[: m.start()]
-        if before.strip().startswith(("*", "/*")) or before.count('"') % 2 == 1:
-            continue  # inside a block comment or a string
         k = indent(line)
         covered = {i + 1}
         j = i + 1
@@ -165,12 +177,10 @@ def why_comments(lines):
     return found
 
 
-def nosem_comment(line):
-    """A `// nosemgrep: …` comment on a line: (set of rule ids, reason or None), or None."""
-    pos = line.find("nosemgrep")
-    if pos < 0:
-        return None
-    m = NOSEM.search(line)
+def nosem_comment(lines, kind, starts, i):
+    """Line i's `// nosemgrep: …` comment: (set of rule ids, reason or None), or None."""
+    at = line_comment(lines, kind, starts, i)
+    m = NOSEM.match(lines[i], at) if at is not None else None
     if not m:
         return None
     ids = {t.split(".")[-1] for t in re.split(r"[,\s]+", m.group(1).strip()) if t}
@@ -180,7 +190,7 @@ def nosem_comment(line):
 def run_semgrep(semgrep, root, paths):
     cmd = [
         semgrep, "scan", "--config", RULES, "--json", "--metrics=off", "--disable-version-check",
-        "--disable-nosem", "--quiet", "--jobs", "2", *paths,
+        "--disable-nosem", "--quiet", "--jobs", "2", "--project-root", ".", *paths,
     ]
     proc = subprocess.run(cmd, cwd=root, capture_output=True, text=True)
     try:
@@ -209,14 +219,14 @@ class Finding:
 def analyse(semgrep, root, paths):
     """Runs semgrep and sorts its findings: (open, suppressed, allowed, problems, parse warnings)."""
     out = run_semgrep(semgrep, root, paths)
-    sources, masks, starts = {}, {}, {}
+    sources, kind, starts = {}, {}, {}
 
     def source(path):
         if path not in sources:
             with open(os.path.join(root, path), encoding="utf-8") as f:
                 text = f.read()
             sources[path] = text
-            masks[path] = code_mask(text)
+            kind[path] = kinds(text)
             offsets, at = [], 0
             for line in text.split("\n"):
                 offsets.append(at)
@@ -232,7 +242,7 @@ def analyse(semgrep, root, paths):
         text = source(path)
         if rule in KEYWORD_RULES:
             offset = starts[path][line - 1] + col - 1
-            if not masks[path][offset]:
+            if kind[path][offset] != CODE:
                 continue  # in a comment or a string
         if (path, line, col, rule) in seen:
             continue
@@ -244,7 +254,7 @@ def analyse(semgrep, root, paths):
     for p in out.get("paths", {}).get("scanned", []):
         source(os.path.relpath(os.path.join(root, p), root))
 
-    why = {p: why_comments(t.split("\n")) for p, t in sources.items()}
+    why = {p: why_comments(t.split("\n"), kind[p], starts[p]) for p, t in sources.items()}
     used_why = Counter()
     used_nosem = Counter()
     open_, suppressed, allowed, problems = [], [], [], []
@@ -259,7 +269,7 @@ def analyse(semgrep, root, paths):
         hit = None
         for at in (f.line, f.line - 1):
             if at >= 1:
-                c = nosem_comment(lines[at - 1])
+                c = nosem_comment(lines, kind[f.path], starts[f.path], at - 1)
                 if c and f.rule in c[0]:
                     hit = (at, c[1])
                     break
@@ -273,10 +283,9 @@ def analyse(semgrep, root, paths):
             open_.append(f)
 
     for path, text in sorted(sources.items()):
-        for n, line in enumerate(text.split("\n"), start=1):
-            if nosem_comment(line) and masks[path][starts[path][n - 1] + line.find("nosemgrep")]:
-                continue  # the word in code, not a comment
-            if nosem_comment(line) and used_nosem[(path, n)] == 0:
+        lines = text.split("\n")
+        for n in range(1, len(lines) + 1):
+            if nosem_comment(lines, kind[path], starts[path], n - 1) and used_nosem[(path, n)] == 0:
                 problems.append(f"{path}:{n}: this nosemgrep suppresses nothing: remove it")
 
     warnings = []

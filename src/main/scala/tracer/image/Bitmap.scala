@@ -117,10 +117,10 @@ object Bitmap:
     val height = bands.iterator.map(_.height.toLong).sum
     require(height <= Int.MaxValue, "stacked image too tall")
     val samples = allocate(first.width, height.toInt, first.maxval)
-    bands.foldLeft(0) { (at, band) =>
-      System.arraycopy(band.samples, 0, samples, at, band.samples.length)
-      at + band.samples.length
-    }
+    val starts  = bands.scanLeft(0)(_ + _.samples.length)
+    bands
+      .lazyZip(starts)
+      .foreach((band, at) => System.arraycopy(band.samples, 0, samples, at, band.samples.length))
     new Bitmap(first.width, height.toInt, first.maxval, samples)
 
   /** The raw samples, for the codecs in this package; callers must not change them. */

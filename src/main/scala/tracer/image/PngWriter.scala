@@ -22,11 +22,11 @@ private[image] object PngWriter:
       d.writeInt(w); d.writeInt(h); d.writeByte(8); d.writeByte(2); d.writeByte(0); d.writeByte(0);
       d.writeByte(0)
     }
-    val data      = ByteArrayOutputStream()
-    val deflater  = Deflater(6)
-    val zip       = DeflaterOutputStream(data, deflater, 1 << 16)
-    val stride    = 3 * w
-    val samples   = Bitmap.samplesOf(bitmap)
+    val data     = ByteArrayOutputStream()
+    val deflater = Deflater(6)
+    val zip      = DeflaterOutputStream(data, deflater, 1 << 16)
+    val stride   = 3 * w
+    val samples  = Bitmap.samplesOf(bitmap)
     // Perf: two row buffers, swapped after each row rather than allocated per row.
     var previous  = new Array[Byte](stride)
     var current   = new Array[Byte](stride)

@@ -105,14 +105,14 @@ class MainSuite extends munit.FunSuite with Images:
     )
 
   dir.test("the picture has the resolved size: -x 64 with the default camera is 64×48"): d =>
-    run(d, simple, "-x", "64", "o.ppm")
+    run(d, simple, "-x", "64", "o.ppm"): Unit
     val image = Ppm.read(Files.readAllBytes(d.resolve("o.ppm"))).toOption.get
     assertEquals((image.width, image.height), (64, 48))
 
   dir.test("-z, -w and -h override the scene's camera"): d =>
-    run(d, simple, "-x", "32", "-y", "24", "plain.ppm")
-    run(d, simple, "-x", "32", "-y", "24", "-z", "2", "zoomed.ppm")
-    run(d, simple, "-x", "32", "-y", "24", "-w", "2", "-h", "1.5", "wide.ppm")
+    run(d, simple, "-x", "32", "-y", "24", "plain.ppm"): Unit
+    run(d, simple, "-x", "32", "-y", "24", "-z", "2", "zoomed.ppm"): Unit
+    run(d, simple, "-x", "32", "-y", "24", "-w", "2", "-h", "1.5", "wide.ppm"): Unit
     val List(plain, zoomed, wide) = List("plain.ppm", "zoomed.ppm", "wide.ppm").map(n =>
       Ppm.read(Files.readAllBytes(d.resolve(n))).toOption.get
     )

@@ -84,4 +84,3 @@ class SceneWriterProperties extends ScalaCheckSuite:
         case Right(back) => assert(sameScene(back, s), s"$back\n!=\n$s\n$text")
         case Left(e)     => fail(s"${e.describe}\n$text")
     }
-

@@ -139,7 +139,7 @@ class SceneXmlSuite extends munit.FunSuite:
       withCamera(
         s"""<sphere radius="1"><centre x="0" y="0" z="0"/>$tex</sphere><sphere radius="1"><centre x="3" y="0" z="0"/>$tex</sphere>"""
       )
-    )
+    ): Unit
     assertEquals(loaded.toList, List("t.ppm"))
 
   // Errors: each names the element, its line and what is wrong.

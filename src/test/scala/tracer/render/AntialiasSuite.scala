@@ -24,10 +24,18 @@ class AntialiasSuite extends munit.FunSuite:
   private val level = Camera(Vec3(0, 1, -5), Vec3(0, 1, 0))
   private val floor = matte(Plane.at(Vec3.UnitY, 0), Colour.White)
 
-  test("one sample a pixel gives exactly the plain picture"):
-    val scene  = Scene(level, lights = List(Light(Vec3(1, 2, -4))), objects = List(floor))
-    val config = CameraConfig(1, 1, 0.75, 16, 12)
-    assertEquals(Renderer.render(scene, config.copy(samples = 1)), Renderer.render(scene, config))
+  test("one sample a pixel is the ray through the pixel's centre"):
+    val scene      = Scene(level, objects = List(floor))
+    val config     = CameraConfig(1, 1, 0.75, 16, 12, mode = ShadingMode.Quick, samples = 1)
+    val projection = Projection(level, config)
+    val image      = Renderer.render(scene, config)
+    // In quick mode a floor sample is |rn · Rd| = |Rd.y|; a sky sample is black. The horizon
+    // crosses the middle rows, so a sample anywhere but the centre changes some pixel.
+    for y <- 0 until 12; x <- 0 until 16 do
+      val centre = Math.max(0, -projection.ray(x + 0.5, y + 0.5).direction.y)
+      assertEquals(image.sample(x, y, 0), Colour.quantise(centre, 255), s"pixel ($x, $y)")
+    // The same picture, from four samples a pixel, differs: the test can tell them apart.
+    assertNotEquals(Renderer.render(scene, config.copy(samples = 2)), image)
 
   test("a pixel straddling the horizon is the mean of what its samples see"):
     val scene  = Scene(level, objects = List(floor))
