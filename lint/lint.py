@@ -10,7 +10,9 @@ then applies the project's rules for what a finding may stand on:
     finds them by pattern-regex) counts only in code: hits inside comments and string literals are
     dropped. These words are reserved in Scala (or, for the casts, members no one else names), so
     a token scan is exact where semgrep's Scala parser is not (it reads a `val` as a variable).
-  - `var`, `while` and `throw` stand where a `// Why: …` or `// Perf: …` comment covers them.
+  - `var`, `while` and `throw` stand where a `// Why: …` or `// Perf: …` comment covers them
+    (or a Scaladoc comment one of whose lines starts with `Why:` or `Perf:`: it covers the
+    paragraph below its end, as a line comment of its own does).
     A comment on lines of its own, indented k, covers the paragraph below it: the following
     lines indented k up to the first blank line, the next comment at indentation k, or a line
     indented less than k; and with them every line indented deeper than k beneath them (the
@@ -130,11 +132,52 @@ def line_comment(lines, kind, starts, i):
     return None
 
 
+def paragraph(lines, j, k, covered):
+    """Adds to `covered` the paragraph from line j (0-based) of a comment indented k."""
+    blank = False
+    while j < len(lines):
+        s = lines[j].strip()
+        if not s:
+            blank = True
+        elif indent(lines[j]) < k:
+            break
+        elif indent(lines[j]) == k:
+            if blank or s.startswith(("//", "/*")):
+                break
+            blank = False
+        covered.add(j + 1)
+        j += 1
+
+
+DOC_TAG = re.compile(r"^\s*(?:/\*\*?|\*)?\s*(Why|Perf):\s*(\S.*?)\s*(?:\*/)?\s*$")
+
+
 def why_comments(lines, kind, starts):
-    """The `// Why:`/`// Perf:` comments of a file: (line, reason, set of covered lines), 1-based."""
+    """The `Why:`/`Perf:` comments of a file: (line, reason, set of covered lines), 1-based."""
     found = []
     n = len(lines)
     for i, line in enumerate(lines):
+        stripped = line.strip()
+        if stripped.startswith("/*") and kind[starts[i] + indent(line)] == COMMENT:
+            # A block comment (Scaladoc) with a line that starts with the tag covers the
+            # paragraph that follows its end.
+            last = i
+            while last < n - 1 and "*/" not in lines[last]:
+                last += 1
+            for t in range(i, last + 1):
+                m = DOC_TAG.match(lines[t])
+                if m:
+                    reason = [m.group(2)]
+                    for u in range(t + 1, last + 1):
+                        more = lines[u].strip().lstrip("*").strip().removesuffix("*/").strip()
+                        if not more or more.startswith(("@", "/")):
+                            break
+                        reason.append(more)
+                    covered = set(range(i + 1, last + 2))
+                    paragraph(lines, last + 1, indent(line), covered)
+                    found.append((t + 1, m.group(1) + ": " + " ".join(reason), covered))
+                    break
+            continue
         at = line_comment(lines, kind, starts, i)
         m = WHY.match(line, at) if at is not None else None
         if not m:
@@ -160,19 +203,7 @@ def why_comments(lines, kind, starts):
                 covered.add(j + 1)
                 j += 1
             text = " ".join(reason)
-            blank = False
-            while j < n:
-                s = lines[j].strip()
-                if not s:
-                    blank = True
-                elif indent(lines[j]) < k:
-                    break
-                elif indent(lines[j]) == k:
-                    if blank or s.startswith(("//", "/*")):
-                        break
-                    blank = False
-                covered.add(j + 1)
-                j += 1
+            paragraph(lines, j, k, covered)
         found.append((i + 1, m.group(1) + ": " + text, covered))
     return found
 
@@ -334,7 +365,11 @@ def doc_section(suppressed, allowed, pending):
         rows.setdefault((f.path, None, reason), Counter())[f.rule] += 1
     for (path, at, reason), rules in sorted(rows.items(), key=lambda kv: (kv[0][0], kv[0][1] or 0)):
         covers = ", ".join(f"{n} × `{r}`" for r, n in sorted(rules.items()))
-        where = "`nosemgrep`" if at is None else "`" + reason.split(":")[0] + ":`"
+        if at is None:
+            where = "`nosemgrep`"
+        else:
+            tag, reason = reason.split(": ", 1)
+            where = f"`{tag}:`"
         out.append(f"| `{path}` | {where} | {covers} | {reason.replace('|', '/')} |")
     if pending:
         out += ["", "Waiting for their owners (files being rewritten today; `lint/pending.txt`):", "",

@@ -26,7 +26,9 @@ object Batch:
         case Array(scene, output) if scene.nonEmpty && output.nonEmpty =>
           Right(BatchFrame(n, scene, output))
         case Array(scene, output, rows) if scene.nonEmpty && output.nonEmpty =>
-          Options.band(rows).left
+          Options
+            .band(rows)
+            .left
             .map(why => s"line $n: $why")
             .map(band => BatchFrame(n, scene, output, Some(band)))
         case _ => Left(s"line $n: expected SCENE<TAB>OUTPUT[<TAB>a:b], got '${text.take(60)}'")

@@ -157,8 +157,8 @@ object Models:
     Files.writeString(
       dir.resolve("knot.obj"),
       obj(torusKnot(2, 3, 240, 12, 0.22), "a (2, 3) torus knot")
-    ): Unit
-    Files.writeString(dir.resolve("terrain.obj"), obj(terrain(48), "a rolling terrain"))
+    )
+    Files.writeString(dir.resolve("terrain.obj"), obj(terrain(48), "a rolling terrain")): Unit
 
   /** Writes the models into the directory named by the first argument (default `scenes/models`). */
   def main(args: Array[String]): Unit = writeGallery(
