@@ -20,7 +20,6 @@ ThisBuild / scalacOptions ++= Seq(
   "-Werror"
 )
 
-
 lazy val root = project
   .in(file("."))
   .settings(
@@ -112,7 +111,8 @@ addCommandAlias(
 )
 
 // `./sbt movie` (the course's `ant movie`): builds the tracer, writes the frames of the project's
-// animation (tracer.demo.Animation, in the demo module) and renders them with scripts/movie.sh into target/movie/.
+// animation (tracer.demo.Animation, in the demo module) and renders them with scripts/movie.sh
+// into target/movie/.
 lazy val movie = taskKey[Seq[File]]("Renders the project's movie into target/movie/")
 
 movie := {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """lint.py: the project's code analysis (docs/analysis.md), run by scripts/lint.sh.
 
-    lint.py SEMGREP [--root DIR] [--write-doc] [--pending] [PATH...]
+    lint.py SEMGREP [--root DIR] [--write-doc] [--pending] [--write-pending] [PATH...]
 
 Runs semgrep with lint/semgrep.yml over the Scala sources (default: src, demo/src, bench/src),
 then applies the project's rules for what a finding may stand on:
@@ -26,7 +26,8 @@ then applies the project's rules for what a finding may stand on:
     reason, or one that suppresses nothing, is itself a finding.
   - lint/pending.txt lists findings in files that their owners are rewriting (path, rule, the
     line's text, tab-separated); they are reported but do not fail, and an entry that matches
-    nothing any more does fail.
+    nothing any more does fail. --write-pending rewrites it with the open findings under the
+    paths its `# owners' paths:` line names (for merging those owners' work; none elsewhere).
 
 Every finding left fails, printed as PATH:LINE:COLUMN: RULE-ID: message. Then docs/analysis.md's
 generated section (between the lint:begin and lint:end markers) must be what --write-doc writes:
@@ -329,17 +330,36 @@ def analyse(semgrep, root, paths):
     return open_, suppressed, allowed, problems, warnings
 
 
+OWNED = "# owners' paths:"
+
+
 def read_pending(root):
-    entries = []
+    """The entries of lint/pending.txt, and the paths it may hold findings in (its owners' paths)."""
+    entries, owned = [], []
     try:
         with open(os.path.join(root, PENDING), encoding="utf-8") as f:
             for line in f:
-                if line.strip() and not line.startswith("#"):
+                if line.startswith(OWNED):
+                    owned += line[len(OWNED):].split()
+                elif line.strip() and not line.startswith("#"):
                     path, rule, text = line.rstrip("\n").split("\t", 2)
                     entries.append((path, rule, text.strip()))
     except FileNotFoundError:
         pass
-    return entries
+    return entries, owned
+
+
+def write_pending(root, findings, owned):
+    """Rewrites lint/pending.txt: its comments, then `findings` under the owners' paths."""
+    path = os.path.join(root, PENDING)
+    with open(path, encoding="utf-8") as f:
+        head = [line for line in f if line.startswith("#")]
+    kept = [f for f in findings if f.path.startswith(tuple(owned))]
+    with open(path, "w", encoding="utf-8") as f:
+        f.writelines(head)
+        for finding in kept:
+            f.write(f"{finding.path}\t{finding.rule}\t{finding.text.strip()}\n")
+    return kept
 
 
 def doc_section(suppressed, allowed, pending):
@@ -385,7 +405,7 @@ def main(argv):
     if not args:
         sys.exit("usage: lint.py SEMGREP [--root DIR] [--write-doc] [--pending] [PATH...]")
     semgrep, args = args[0], args[1:]
-    root, write_doc, show_pending, paths = os.getcwd(), False, False, []
+    root, write_doc, show_pending, rewrite_pending, paths = os.getcwd(), False, False, False, []
     while args:
         a = args.pop(0)
         if a == "--root":
@@ -394,6 +414,8 @@ def main(argv):
             write_doc = True
         elif a == "--pending":
             show_pending = True
+        elif a == "--write-pending":
+            rewrite_pending = True
         else:
             paths.append(a)
     whole_tree = not paths
@@ -401,8 +423,12 @@ def main(argv):
 
     open_, suppressed, allowed, problems, warnings = analyse(semgrep, root, paths)
 
+    entries, owned = read_pending(root) if whole_tree else ([], [])
+    if rewrite_pending and whole_tree:
+        entries = [f.key() for f in write_pending(root, open_, owned)]
+        print(f"lint: wrote {PENDING} ({len(entries)} entries)")
     # Entries are counted: two equal lines with the same finding need two entries.
-    left = Counter(read_pending(root) if whole_tree else [])
+    left = Counter(entries)
     waiting, still_open = [], []
     for f in open_:
         if left[f.key()] > 0:

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # lint.sh: the project's code analysis (`./sbt lint`; docs/analysis.md).
 #
-#   scripts/lint.sh [--write-doc] [--pending] [PATH...]
+#   scripts/lint.sh [--write-doc] [--pending] [--write-pending] [PATH...]
 #
 # Runs semgrep with the rules in lint/semgrep.yml over the Scala sources and applies the project's
 # suppression rules (lint/lint.py). Prints each finding as PATH:LINE:COLUMN: RULE: message and
 # exits 1 if any is left, or if docs/analysis.md's generated list is out of date (--write-doc
-# rewrites it). --pending lists the findings that wait in lint/pending.txt. With PATHs it checks
+# rewrites it). --pending lists the findings that wait in lint/pending.txt; --write-pending rewrites
+# that list from the open findings under its owners' paths (when merging their work). With PATHs it checks
 # only those (and not the doc).
 #
 # semgrep comes from PyPI, pinned, into a virtual environment of its own made on first use in
