@@ -76,8 +76,8 @@ lazy val demo = project
     // scripts/bench.sh puts this jar beside tracer.jar on a classpath.
     Compile / packageBin / artifactPath := baseDirectory.value / "target" / "tracer-demo.jar",
     Test / scalacOptions -= "-Wsafe-init", // as in the root module
-    Test / fork                         := true,
-    Test / baseDirectory                := (ThisBuild / baseDirectory).value,
+    Test / fork          := true,
+    Test / baseDirectory := (ThisBuild / baseDirectory).value,
     Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
     console / initialCommands := (root / console / initialCommands).value + ", tracer.demo.*",
