@@ -73,7 +73,7 @@ lazy val demo = project
   .settings(
     name           := "tracer-demo",
     publish / skip := true,
-    // scripts/bench.sh puts this jar beside tracer.jar on a classpath.
+    // scripts/demo.sh (and so bench.sh) puts this jar beside tracer.jar on a classpath.
     Compile / packageBin / artifactPath := baseDirectory.value / "target" / "tracer-demo.jar",
     Test / scalacOptions -= "-Wsafe-init", // as in the root module
     Test / fork          := true,
