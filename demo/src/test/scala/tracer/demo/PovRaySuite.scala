@@ -1,9 +1,9 @@
-package tracer.cli
+package tracer.demo
 
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.file.{Files, Path}
 import java.util.concurrent.TimeUnit
-import tracer.demo.{BenchScenes, Models, PovRay}
+import tracer.cli.Main
 import tracer.image.{Bitmap, Ppm}
 import tracer.io.{SceneWriter, SceneXml}
 
@@ -101,8 +101,8 @@ class PovRaySuite extends munit.FunSuite:
     if psnr < 40 || off > 0.005 then
       val keep = Path.of("target", "povray-v3")
       Files.createDirectories(keep)
-      Files.copy(dir.resolve("ours.ppm"), keep.resolve(s"${dir.getFileName}-ours.ppm"))
-      Files.copy(dir.resolve("theirs.ppm"), keep.resolve(s"${dir.getFileName}-theirs.ppm"))
+      val _ = Files.copy(dir.resolve("ours.ppm"), keep.resolve(s"${dir.getFileName}-ours.ppm"))
+      val _ = Files.copy(dir.resolve("theirs.ppm"), keep.resolve(s"${dir.getFileName}-theirs.ppm"))
     assert(
       psnr >= 40 && off <= 0.005,
       f"PSNR $psnr%.1f dB, ${100 * off}%.2f%% of pixels off by > 8"
