@@ -28,7 +28,9 @@ object Polynomial:
 
   /** p at `x`, by Horner's rule. */
   def value(c: IArray[Double], x: Double): Double =
-    var k   = c.length - 1 // Perf: Horner's loop, called ~60 times a root.
+    // Perf: Horner's loop without a collection, run ~60 times a root on every torus ray
+    // (SolidsSuite's torus cases).
+    var k   = c.length - 1
     var sum = 0.0
     while k >= 0 do
       sum = sum * x + c(k)
@@ -69,7 +71,8 @@ object Polynomial:
     if a == b then a else x
 
   private def slopeAt(c: IArray[Double], n: Int, x: Double): Double =
-    var k   = n // Perf: Horner's loop for p'.
+    // Perf: Horner's loop for p', as in value.
+    var k   = n
     var sum = 0.0
     while k >= 1 do
       sum = sum * x + c(k) * k
