@@ -11,8 +11,10 @@ import tracer.scene.*
   * Numbers are written exactly (shortest round-trip decimal), so reading the text back gives the
   * same scene; a texture is written as its `name`, which must be the file it can be loaded from.
   * Version 2 attributes are written only where they differ from their defaults, so a version 1
-  * scene is written as version 1. A smooth mesh triangle has no element of its own (only
-  * `<mesh smooth="true">` makes them) and is refused.
+  * scene is written as version 1. A mesh triangle with smooth normals or texture coordinates at
+  * its corners has no element of its own (only `<mesh>` makes them) and is refused, rather than
+  * written without them. Version 3 solids and combinations are written with their placement, and
+  * a child of a combination with its surface where it differs from the one it would inherit.
   */
 object SceneWriter:
 
@@ -43,65 +45,109 @@ object SceneWriter:
   )
 
   private def sceneObject(o: SceneObject): String =
-    shape(o.shape, o, 0, Some(o.surface), Placement.Identity)
+    shape(o.shape, o, 0, Placement.Identity, Nil, Right(o.surface))
 
-  /** The element for `s`, whose first leaf is number `leaf` of `o`'s shape, with `surface` and
-    * `placement` written inside it. A child of a combination gets a surface of its own only where
-    * its surface is not the whole object's (the version 3 rule: children without one inherit it);
-    * a child's `ior` means nothing and is not written.
+  /** The element for `s`, whose first leaf is number `leaf` of `o`'s shape, placed by `placement`
+    * inside elements placed by `enclosing` (innermost first). `look` is the surface it must carry
+    * (`Right`, at the top of the scene), or (`Left`) the one it would inherit: a primitive then
+    * carries its own where it differs, and a combination the surface of its leaves that can sit on
+    * it — one whose pattern lies in its space — so that its children inherit it (the version 3
+    * rule). A child's `ior` means nothing and is not written.
     */
   private def shape(
       s: Shape,
       o: SceneObject,
       leaf: Int,
-      surface: Option[Surface],
-      placement: Placement
+      placement: Placement,
+      enclosing: List[Placement],
+      look: Either[Surface, Surface]
   ): String =
-    val inner = surface.fold("")(this.surface) + place(placement)
+    val space                         = (placement :: enclosing).filterNot(_.isIdentity)
+    def carried(own: Option[Surface]) = look match
+      case Right(top)      => (Some(top), top)
+      case Left(inherited) =>
+        val mine = own.filter(_ != inherited)
+        (mine.map(_.copy(ior = Surface().ior)), own.getOrElse(inherited))
+    def element(own: Option[Surface]) =
+      val (written, _) = carried(own)
+      written.fold("")(surface) + place(placement)
     val scale = if placement.scale != 1 then s""" scale="${number(placement.scale)}"""" else ""
     s match
       case s: Sphere =>
         s"""<sphere radius="${number(s.radius)}"$scale>${vector("centre", s.centre)}""" +
-          s"${vector("pole", s.pole)}${vector("equator", s.equator)}$inner</sphere>"
+          s"${vector("pole", s.pole)}${vector("equator", s.equator)}${element(Some(o.surfaceOf(leaf)))}</sphere>"
       case p: Plane =>
-        s"""<plane distance="${number(p.distance)}"$scale>${vector(
-            "normal",
-            p.normal
-          )}$inner</plane>"""
+        s"""<plane distance="${number(p.distance)}"$scale>${vector("normal", p.normal)}""" +
+          s"${element(Some(o.surfaceOf(leaf)))}</plane>"
       case t: Triangle =>
         require(
           t.cornerNormals.isEmpty,
           "a smooth triangle cannot be written as <triangle>: use <mesh smooth=\"true\">"
         )
-        s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}$inner</triangle>"
+        require(
+          t.textureCorners.isEmpty,
+          "a triangle with texture coordinates at its corners cannot be written as <triangle>: use <mesh>"
+        )
+        s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}" +
+          s"${element(Some(o.surfaceOf(leaf)))}</triangle>"
       case b: Box =>
-        s"<box$scale>${vector("corner1", b.corner1)}${vector("corner2", b.corner2)}$inner</box>"
+        s"<box$scale>${vector("corner1", b.corner1)}${vector("corner2", b.corner2)}" +
+          s"${element(Some(o.surfaceOf(leaf)))}</box>"
       case c: Cone =>
         val open  = if c.open then """ open="true"""" else ""
-        val parts = s"${vector("base", c.base)}${vector("cap", c.cap)}$inner"
+        val parts =
+          s"${vector("base", c.base)}${vector("cap", c.cap)}${element(Some(o.surfaceOf(leaf)))}"
         if c.baseRadius == c.capRadius then
           s"""<cylinder radius="${number(c.baseRadius)}"$open$scale>$parts</cylinder>"""
         else
-          s"""<cone base-radius="${number(c.baseRadius)}" cap-radius="${number(
-              c.capRadius
-            )}"$open$scale>$parts</cone>"""
+          val radii =
+            s"""base-radius="${number(c.baseRadius)}" cap-radius="${number(c.capRadius)}""""
+          s"""<cone $radii$open$scale>$parts</cone>"""
       case t: Torus =>
-        s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>$inner</torus>"""
+        s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>""" +
+          s"${element(Some(o.surfaceOf(leaf)))}</torus>"
       case p: Placed =>
         require(placement.isIdentity, "a placed shape cannot be placed again in the scene format")
-        shape(p.shape, o, leaf, surface, p.placement)
+        shape(p.shape, o, leaf, p.placement, enclosing, look)
       case c: Csg =>
         val name = c.operation match
           case CsgOperation.Union        => "union"
           case CsgOperation.Intersection => "intersection"
           case CsgOperation.Difference   => "difference"
-        val children = c.children.indices.map { i =>
-          val first = leaf + c.firstLeaves(i)
-          val own   = o.surfaceOf(first)
-          val mine  = Option.when(own != o.surface)(own.copy(ior = Surface().ior))
-          shape(c.children(i), o, first, mine, Placement.Identity)
+        // The surface to carry here: a pattern that lies in this element's space on a leaf
+        // placed apart (it can sit nowhere else), else the one its leaves show most (the first of
+        // equals).
+        val shown   = (leaf until leaf + Shape.leafCount(c)).map(o.surfaceOf)
+        val pattern = shown.zip(leafSpaces(c, placement :: enclosing)).collectFirst {
+          case (surface @ Surface(_, _, checker: Pigment.Checker, _, _, _, _, _, _), own)
+              if checker.space == space && own != space =>
+            surface
         }
-        s"<$name$scale>${children.mkString}$inner</$name>"
+        val plain = shown.filter(_.pigment match
+          case checker: Pigment.Checker               => checker.space == space
+          case Pigment.Solid(_) | Pigment.Textured(_) => true)
+        val own         = pattern.orElse(plain.distinct.maxByOption(s => plain.count(_ == s)))
+        val (_, passed) = carried(own)
+        val children    = c.children.indices.map { i =>
+          shape(
+            c.children(i),
+            o,
+            leaf + c.firstLeaves(i),
+            Placement.Identity,
+            placement :: enclosing,
+            Left(passed)
+          )
+        }
+        s"<$name$scale>${children.mkString}${element(own)}</$name>"
+
+  /** The pattern space of each leaf of `s` (as a surface of its own would have it), inside
+    * elements placed by `enclosing`, innermost first.
+    */
+  private def leafSpaces(s: Shape, enclosing: List[Placement]): Vector[List[Placement]] = s match
+    case p: Placed => leafSpaces(p.shape, p.placement :: enclosing)
+    case c: Csg    => c.children.flatMap(leafSpaces(_, Placement.Identity :: enclosing))
+    case _: (Sphere | Plane | Triangle | Box | Cone | Torus) =>
+      Vector(enclosing.filterNot(_.isIdentity))
 
   private def place(p: Placement): String =
     (if p.rotate != Vec3.Zero then vector("rotate", p.rotate) else "") +
