@@ -60,7 +60,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             var k   = links(2 * node)
             val end = k + count
             while k < end do
-              val t = Primitives.distance(prims, k, ox, oy, oz, dx, dy, dz)
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz)
               if t <= bestT && t < Double.PositiveInfinity then
                 val i = prims.index(k)
                 if t < bestT || i < best then
@@ -128,7 +128,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
           var k   = links(2 * node)
           val end = k + count
           while k < end && !hit do
-            hit = Primitives.distance(prims, k, ox, oy, oz, dx, dy, dz) < limit
+            hit = Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz) < limit
             k += 1
         else
           val left = links(2 * node)

@@ -88,11 +88,13 @@ object Primitives:
 
   /** The distance along the ray (origin o, unit direction d) to primitive `k`, or +∞ on a miss:
     * bit for bit what [[tracer.geometry.Shape.distance]] gives for its shape, the same operations
-    * in the same order on the same values. Only the general route makes a [[Ray]].
+    * in the same order on the same values. A triangle farther than `cutoff` may be reported as a
+    * miss without finishing its test. Only the general route makes a [[Ray]].
     */
   inline def distance(
       p: Primitives,
       k: Int,
+      cutoff: Double,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -101,7 +103,7 @@ object Primitives:
       dz: Double
   ): Double =
     val kd = p.kind(k)
-    if kd == TriangleKind then triangle(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
+    if kd == TriangleKind then triangle(p.data, Stride * k, cutoff, ox, oy, oz, dx, dy, dz)
     else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
     else if kd == PlaneKind then plane(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
     else general(p.all(p.index(k)), ox, oy, oz, dx, dy, dz)
@@ -165,6 +167,7 @@ object Primitives:
   private inline def triangle(
       data: Array[Double],
       at: Int,
+      cutoff: Double,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -179,7 +182,9 @@ object Primitives:
     if vd == 0 then Double.PositiveInfinity
     else
       val t = (data(at + 3) - (nx * ox + ny * oy + nz * oz)) / vd
-      if !(t > 0) || t == Double.PositiveInfinity then Double.PositiveInfinity
+      // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped; the
+      // test of a hit that counts is unchanged (u's sign is final before v is computed).
+      if !(t > 0) || t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
       else
         val qx = ox + dx * t - data(at + 4)
         val qy = oy + dy * t - data(at + 5)
@@ -189,5 +194,7 @@ object Primitives:
         val bb = data(at + 13)
         val ab = data(at + 14)
         val u  = (bb * qa - ab * qb) / data(at + 15)
-        val v  = (qb - u * ab) / bb
-        if u >= 0 && v >= 0 && u + v <= 1 then t else Double.PositiveInfinity
+        if !(u >= 0) then Double.PositiveInfinity
+        else
+          val v = (qb - u * ab) / bb
+          if v >= 0 && u + v <= 1 then t else Double.PositiveInfinity

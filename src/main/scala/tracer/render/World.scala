@@ -68,7 +68,7 @@ final class World(scene: Scene):
     var bestT = limit
     var k     = 0
     while k < unbounded.size do
-      val t = Primitives.distance(unbounded, k, ox, oy, oz, dx, dy, dz)
+      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz)
       if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
         bestT = t
         best = unbounded.index(k)
@@ -97,7 +97,17 @@ final class World(scene: Scene):
       query: Query
   ): Boolean =
     var k = 0
-    while k < unbounded.size && !(Primitives.distance(unbounded, k, ox, oy, oz, dx, dy, dz) < limit)
+    while k < unbounded.size && !(Primitives.distance(
+        unbounded,
+        k,
+        limit,
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz
+      ) < limit)
     do k += 1
     k < unbounded.size || bvh.occluded(ox, oy, oz, dx, dy, dz, limit, query)
 
