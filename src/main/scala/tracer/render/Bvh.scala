@@ -18,7 +18,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
   private val prims = Primitives(shapes, tree.order)
 
   /** The number of nodes, for tests and benchmarks. */
-  def nodeCount: Int = links.length / 2
+  def nodeCount: Int = tree.size
 
   /** The index in `shapes` of the shape the ray from (ox, oy, oz) in unit direction (dx, dy, dz)
     * hits first, competing with a candidate already found: shape `limitIndex` at distance `limit`
@@ -46,7 +46,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var sp = 0
       val t0 =
-        if links.isEmpty then Double.PositiveInfinity
+        if tree.size == 0 then Double.PositiveInfinity
         else entry(0, ox, oy, oz, ix, iy, iz, sx, sy, sz, bestT)
       if t0 < Double.PositiveInfinity then
         stack(0) = 0; entries(0) = t0; sp = 1
@@ -105,7 +105,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  = 0
-      if links.nonEmpty && entry(
+      if tree.size > 0 && entry(
           0,
           ox,
           oy,

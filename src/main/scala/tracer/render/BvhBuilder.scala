@@ -2,12 +2,13 @@ package tracer.render
 
 import tracer.geometry.{Bounds, Shape}
 
-/** A built hierarchy as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
+/** A built hierarchy of `size` nodes as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
   * high x, y, z), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
   * one follows it) and 0, for a leaf the first of its primitives and their count (≥ 1).
   * `order` lists the indexed shapes' indices in leaf order.
   */
 private[render] final class Tree(
+    val size: Int,
     val boxes: Array[Double],
     val links: Array[Int],
     val order: Array[Int]
@@ -23,18 +24,35 @@ private[render] final class Tree(
 private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
   import BvhBuilder.*
 
-  private val boundsOf = shapes.map(Bounds.of)
-  private val prims    = shapes.indices.filter(i => boundsOf(i).isDefined).toArray
-  // Each primitive's box (padded so flat boxes, like a triangle in a plane, have depth) and centroid.
+  // Each primitive's box (padded so flat boxes, like a triangle in a plane, have depth) and
+  // centroid, at its position in `prims` (3k..3k+2), moved with it by the partitions.
+  // Perf: so every pass of a split reads memory in order; indexed by shape they were read at
+  // random, and a million-triangle build waited on the cache (docs/performance.md, round 4).
   private val boxLo  = new Array[Double](3 * shapes.length)
   private val boxHi  = new Array[Double](3 * shapes.length)
   private val centre = new Array[Double](3 * shapes.length)
-  prims.foreach(bound)
+  // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
+  // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
+  private val prims =
+    val found = Array.newBuilder[Int]
+    var i     = 0
+    var k     = 0
+    while i < shapes.length do
+      Bounds.of(shapes(i)) match
+        case Some(b) =>
+          found += i
+          setBox(k, 0, b.lo.x, b.hi.x)
+          setBox(k, 1, b.lo.y, b.hi.y)
+          setBox(k, 2, b.lo.z, b.hi.z)
+          k += 1
+        case None => ()
+      i += 1
+    found.result()
 
-  // The nodes, grown as needed (mutable only while building).
+  // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
   private var size  = 0
-  private var boxes = new Array[Double](6 * 64)
-  private var links = new Array[Int](2 * 64)
+  private val boxes = new Array[Double](6 * Math.max(1, 2 * prims.length - 1))
+  private val links = new Array[Int](2 * Math.max(1, 2 * prims.length - 1))
 
   // Scratch space for one split: per-bin counts and boxes, and the sweeps' results.
   private val binCount = new Array[Int](Bins)
@@ -43,17 +61,10 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
   private val leftCost = new Array[Double](Bins)
   private val box      = new Array[Double](6)
 
-  /** Builds the tree. */
+  /** Builds the tree. Its arrays may be longer than its nodes (`Tree.size` says how many). */
   def build(): Tree =
     if prims.nonEmpty then split(newNode(), 0, prims.length, 0)
-    Tree(java.util.Arrays.copyOf(boxes, 6 * size), java.util.Arrays.copyOf(links, 2 * size), prims)
-
-  private def bound(i: Int): Unit =
-    boundsOf(i).foreach { b =>
-      setBox(i, 0, b.lo.x, b.hi.x)
-      setBox(i, 1, b.lo.y, b.hi.y)
-      setBox(i, 2, b.lo.z, b.hi.z)
-    }
+    Tree(size, boxes, links, prims)
 
   private def setBox(i: Int, axis: Int, low: Double, high: Double): Unit =
     val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
@@ -62,9 +73,6 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
     centre(3 * i + axis) = (low + high) / 2
 
   private def newNode(): Int =
-    if size == links.length / 2 then
-      boxes = java.util.Arrays.copyOf(boxes, 2 * boxes.length)
-      links = java.util.Arrays.copyOf(links, 2 * links.length)
     size += 1
     size - 1
 
@@ -85,16 +93,15 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
       boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
     var k = start
     while k < end do
-      val i = prims(k)
       var a = 0
       while a < 3 do
-        boxes(nb + a) = boxes(nb + a) min boxLo(3 * i + a)
-        boxes(nb + 3 + a) = boxes(nb + 3 + a) max boxHi(3 * i + a)
+        boxes(nb + a) = boxes(nb + a) min boxLo(3 * k + a)
+        boxes(nb + 3 + a) = boxes(nb + 3 + a) max boxHi(3 * k + a)
         a += 1
-      cl0 = cl0 min centre(3 * i); cl1 = cl1 min centre(3 * i + 1)
-      cl2 = cl2 min centre(3 * i + 2)
-      ch0 = ch0 max centre(3 * i); ch1 = ch1 max centre(3 * i + 1)
-      ch2 = ch2 max centre(3 * i + 2)
+      cl0 = cl0 min centre(3 * k); cl1 = cl1 min centre(3 * k + 1)
+      cl2 = cl2 min centre(3 * k + 2)
+      ch0 = ch0 max centre(3 * k); ch1 = ch1 max centre(3 * k + 1)
+      ch2 = ch2 max centre(3 * k + 2)
       k += 1
     val n = end - start
     // Split along the axis where the centroids spread most.
@@ -106,21 +113,20 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
       links(2 * node) = start; links(2 * node + 1) = n
     if n <= MaxLeaf / 2 || extent <= 0 || depth >= Bvh.StackSize / 2 then leaf()
     else
-      def bin(i: Int): Int =
-        Math.min(Bins - 1, ((centre(3 * i + axis) - low) / extent * Bins).toInt)
+      def bin(k: Int): Int =
+        Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
       // Bin the primitives along the axis.
       java.util.Arrays.fill(binCount, 0)
       java.util.Arrays.fill(binLo, Double.PositiveInfinity)
       java.util.Arrays.fill(binHi, Double.NegativeInfinity)
       k = start
       while k < end do
-        val i = prims(k)
-        val b = bin(i)
+        val b = bin(k)
         binCount(b) += 1
         var a = 0
         while a < 3 do
-          binLo(3 * b + a) = binLo(3 * b + a) min boxLo(3 * i + a)
-          binHi(3 * b + a) = binHi(3 * b + a) max boxHi(3 * i + a)
+          binLo(3 * b + a) = binLo(3 * b + a) min boxLo(3 * k + a)
+          binHi(3 * b + a) = binHi(3 * b + a) max boxHi(3 * k + a)
           a += 1
         k += 1
       // Sweep from the left: leftCost(s) = count · area of bins 0..s.
@@ -152,9 +158,9 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
         var i = start
         var j = end - 1
         while i <= j do
-          if bin(prims(i)) <= best then i += 1
+          if bin(i) <= best then i += 1
           else
-            val swap = prims(i); prims(i) = prims(j); prims(j) = swap
+            swap(i, j)
             j -= 1
         val mid  = if i == start || i == end then (start + end) / 2 else i
         val left = newNode()
@@ -162,6 +168,19 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
         links(2 * node) = left; links(2 * node + 1) = 0
         split(left, start, mid, depth + 1)
         split(left + 1, mid, end, depth + 1)
+
+  /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
+  private def swap(i: Int, j: Int): Unit =
+    val p = prims(i); prims(i) = prims(j); prims(j) = p
+    var a = 0
+    while a < 3 do
+      exchange(boxLo, 3 * i + a, 3 * j + a)
+      exchange(boxHi, 3 * i + a, 3 * j + a)
+      exchange(centre, 3 * i + a, 3 * j + a)
+      a += 1
+
+  private def exchange(xs: Array[Double], i: Int, j: Int): Unit =
+    val x = xs(i); xs(i) = xs(j); xs(j) = x
 
   private def sweepStart(): Unit =
     java.util.Arrays.fill(box, 0, 3, Double.PositiveInfinity)
