@@ -90,10 +90,11 @@ object Bitmap:
       y += 1
     new Bitmap(width, height, maxval, samples)
 
-  /** A bitmap whose rows `fill` computes, each possibly on another thread: `fill` is given a
-    * function that computes row y (pixel (x, y) is `pixel(x, y)`, brought into range) straight
-    * into the bitmap, and must have called it once for every row when it returns (a row's
-    * computation must have completed, e.g. its Future awaited). No row is copied afterwards.
+  /** A bitmap built row by row, the rows possibly on other threads, without copying them.
+    *
+    * `fill` is given a function that computes row y (pixel (x, y) is `pixel(x, y)`, brought into
+    * range) straight into the bitmap; when `fill` returns it must have called it once for every
+    * row, and each call must have completed (its Future awaited).
     */
   def byRows(width: Int, height: Int, maxval: Int = 255)(
       fill: ((Int, (Int, Int) => Colour) => Unit) => Unit

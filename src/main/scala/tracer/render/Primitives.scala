@@ -19,7 +19,7 @@ enum Route:
     */
   case General
 
-/** The route of each shape, and the flat per-primitive data the kernel's leaf tests read. */
+/** The route of each shape. */
 object Route:
   /** The route `shape` takes: the one place that decides between the kernel and the general path. */
   def of(shape: Shape): Route = shape match
