@@ -44,6 +44,7 @@ final class Primitives(shapes: IndexedSeq[Shape], order: Array[Int]):
   private[render] val all   = shapes
 
   locally {
+    // Perf: a plain loop filling the arrays, once per world.
     var k = 0
     while k < order.length do
       kind(k) = Primitives.store(shapes(order(k)), data, Primitives.Stride * k).ordinal.toByte
