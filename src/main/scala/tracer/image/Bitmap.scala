@@ -91,6 +91,26 @@ object Bitmap:
       y += 1
     new Bitmap(width, height, maxval, samples)
 
+  /** A bitmap built row by row, the rows possibly on other threads, without copying them.
+    *
+    * `fill` is given a function that computes row y (pixel (x, y) is `pixel(x, y)`, brought into
+    * range) straight into the bitmap; when `fill` returns it must have called it once for every
+    * row, and each call must have completed (its Future awaited).
+    */
+  def byRows(width: Int, height: Int, maxval: Int = 255)(
+      fill: ((Int, (Int, Int) => Colour) => Unit) => Unit
+  ): Bitmap =
+    val samples = allocate(width, height, maxval)
+    // Perf: each row is written once into the final array, by whichever thread computes it; the
+    // rows are disjoint, and `fill` returns only after every row is done (Renderer awaits them).
+    fill { (y, pixel) =>
+      var x = 0
+      while x < width do
+        store(samples, 3 * (y * width + x), pixel(x, y), maxval)
+        x += 1
+    }
+    new Bitmap(width, height, maxval, samples)
+
   /** A bitmap of one colour. */
   def fill(width: Int, height: Int, colour: Colour, maxval: Int = 255): Bitmap =
     tabulate(width, height, maxval)((_, _) => colour)

@@ -5,29 +5,81 @@ private[io] object Decimal:
 
   /** True when `text` is a number as a scene file may write it: `[+-]?(d+.?d*|.d+)([eE][+-]?d+)?`.
     *
-    * Perf: a scan, not a regular expression: a big scene has hundreds of thousands of numbers, and
-    * a regex matcher per number was a sixth of the loading's allocation (docs/performance.md).
+    * Perf: a scan ([[parse]]), not a regular expression: a big scene has hundreds of thousands of
+    * numbers, and a regex matcher per number was a sixth of the loading's allocation
+    * (docs/performance.md).
     */
-  def matches(text: String): Boolean =
-    val n             = text.length
-    var i             = 0
-    def digits(): Int =
-      val start = i
-      while i < n && text.charAt(i) >= '0' && text.charAt(i) <= '9' do i += 1
-      i - start
-    if i < n && (text.charAt(i) == '+' || text.charAt(i) == '-') then i += 1
-    val whole    = digits()
-    val fraction = if i < n && text.charAt(i) == '.' then
-      i += 1; digits()
-    else 0
-    val mantissa = whole > 0 || fraction > 0
-    val exponent =
-      if i < n && (text.charAt(i) == 'e' || text.charAt(i) == 'E') then
+  def matches(text: String): Boolean = !parse(text).isNaN
+
+  /** The value of `text` read as [[matches]] accepts it, or NaN when it is not such a number.
+    * Exactly `java.lang.Double.parseDouble(text)` for every accepted text (so it may be ±∞ for a
+    * huge exponent).
+    */
+  def parse(text: CharSequence): Double = parse(text, 0, text.length)
+
+  /** [[parse]] of the characters `text(from until to)`, without making a String of them. */
+  def parse(text: CharSequence, from: Int, to: Int): Double =
+    // Perf: one scan that checks the grammar and gathers the digits; a value of at most 15
+    // significant digits with a power of ten up to 22 is computed exactly as one correctly rounded
+    // product or quotient of two exact doubles (Clinger's fast path), which is what parseDouble
+    // gives; anything longer goes to parseDouble itself (docs/performance.md, round 4).
+    // Mutable scan state, local to this loop.
+    var i        = from
+    val negative = i < to && text.charAt(i) == '-'
+    if i < to && (text.charAt(i) == '-' || text.charAt(i) == '+') then i += 1
+    var mantissa = 0L
+    var digits   = 0     // significant digits gathered into mantissa
+    var dropped  = false // a nonzero digit beyond what mantissa can hold exactly
+    var scale    = 0     // the power of ten mantissa is to be multiplied by
+    var seen     = 0     // digits of the mantissa, whole and fraction
+    var fraction = false
+    var more     = true
+    while more && i < to do
+      val c = text.charAt(i)
+      if c >= '0' && c <= '9' then
+        seen += 1
+        if mantissa == 0 && c == '0' then
+          (if fraction then scale -= 1
+        )
+        else if digits < 18 then
+          mantissa = 10 * mantissa + (c - '0')
+          digits += 1
+          if fraction then scale -= 1
+        else
+          if c != '0' then dropped = true
+          if !fraction then scale += 1
         i += 1
-        if i < n && (text.charAt(i) == '+' || text.charAt(i) == '-') then i += 1
-        digits() > 0
-      else true
-    mantissa && exponent && i == n
+      else if c == '.' && !fraction then
+        fraction = true
+        i += 1
+      else more = false
+    var exponent = 0
+    var valid    = seen > 0
+    if valid && i < to && (text.charAt(i) == 'e' || text.charAt(i) == 'E') then
+      i += 1
+      val minus = i < to && text.charAt(i) == '-'
+      if i < to && (text.charAt(i) == '-' || text.charAt(i) == '+') then i += 1
+      val start = i
+      while i < to && text.charAt(i) >= '0' && text.charAt(i) <= '9' do
+        if exponent < 100000 then exponent = 10 * exponent + (text.charAt(i) - '0')
+        i += 1
+      valid = i > start
+      if minus then exponent = -exponent
+    if !valid || i != to then Double.NaN
+    else
+      val power = scale + exponent
+      val exact =
+        if dropped || mantissa > (1L << 53) then Double.NaN
+        else if mantissa == 0 then 0.0
+        else if power >= 0 && power <= 22 then mantissa.toDouble * Powers(power)
+        else if power < 0 && power >= -22 then mantissa.toDouble / Powers(-power)
+        else Double.NaN
+      if exact.isNaN then java.lang.Double.parseDouble(text.subSequence(from, to).toString)
+      else if negative then -exact
+      else exact
+
+  /** 10⁰ … 10²², each exact as a double. */
+  private val Powers: Array[Double] = Array.tabulate(23)(k => Math.pow(10, k))
 
   /** `d` as a person would write it and as it reads back exactly: `-1`, not `-1.0`; otherwise the
     * shortest decimal that is exactly `d` (Java's `Double.toString`).

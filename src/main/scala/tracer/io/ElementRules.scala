@@ -70,7 +70,7 @@ private[io] object ElementRules:
   def number(e: Element, key: String): Result[Option[Double]] =
     traverseOption(e.attribute(key)) { raw =>
       val text  = raw.trim
-      val value = if Decimal.matches(text) then java.lang.Double.parseDouble(text) else Double.NaN
+      val value = Decimal.parse(text)
       if value.isFinite then Right(value)
       else Left(e.error(s"attribute $key must be a finite decimal number, got '$raw'"))
     }

@@ -49,118 +49,167 @@ object ObjReader:
 
 /** One pass over an OBJ file; its growing tables never leave it. */
 private final class ObjParser(reader: BufferedReader, name: String):
-  // Perf: vertices in flat growable arrays of doubles, lines split by hand (no regex), so that
-  // hundreds of thousands of faces load quickly (docs/performance.md, meshes).
-  private val vertices     = DoubleBuffer()
-  private var vertexCount  = 0
+  // Perf: each line scanned in place: its words found as index ranges (no substring per word),
+  // numbers read from the line's characters (Decimal.parse) and indices parsed by hand; one Vec3
+  // per vertex, shared by the faces that use it (docs/performance.md, round 4).
+  private val vertices     = mutable.ArrayBuffer.empty[Vec3]
   private val texture      = DoubleBuffer()
   private var textureCount = 0
-  private val normals      = DoubleBuffer()
-  private var normalCount  = 0
+  private val normals      = mutable.ArrayBuffer.empty[Vec3]
   private val triangles    = Vector.newBuilder[ObjTriangle]
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
+  // The current line and its words: word k is line(starts(k) until ends(k)); grown as needed.
+  private var line   = ""
+  private var count  = 0
+  private var starts = new Array[Int](16)
+  private var ends   = new Array[Int](16)
+  // A face's corners, grown as needed.
+  private var cornerV = new Array[Int](8)
+  private var cornerT = new Array[Int](8)
+  private var cornerN = new Array[Int](8)
 
   /** Reads every line: the mesh, or the first error with its line. */
   def run(): Either[String, ObjMesh] =
     try
-      var line = reader.readLine()
-      while line != null do
+      var next = reader.readLine()
+      while next != null do
         lineNumber += 1
-        statement(tokens(line))
-        line = reader.readLine()
+        line = next
+        split()
+        statement()
+        next = reader.readLine()
       Right(ObjMesh(triangles.result(), skipped.toList))
     catch case ObjParser.Malformed(message) => Left(message)
 
-  private def statement(words: Array[String]): Unit =
-    if words.nonEmpty && !words(0).startsWith("#") then
-      words(0) match
-        case "v" =>
-          if words.length < 4 then fail("a vertex needs x, y and z")
-          vertices += number(words(1)); vertices += number(words(2)); vertices += number(words(3))
-          vertexCount += 1
-        case "vt" =>
-          if words.length < 2 then fail("a texture coordinate needs u")
-          texture += number(words(1));
-          texture += (if words.length > 2 then number(words(2)) else 0.0)
-          textureCount += 1
-        case "vn" =>
-          if words.length < 4 then fail("a normal needs x, y and z")
-          normals += number(words(1)); normals += number(words(2)); normals += number(words(3))
-          normalCount += 1
-        case "f"                             => face(words)
-        case kind if ObjReader.Ignored(kind) => ()
-        case kind                            => skipped += kind
+  private def word(k: Int): String = line.substring(starts(k), ends(k))
+
+  /** True when word k is exactly `text`. */
+  private def is(k: Int, text: String): Boolean =
+    ends(k) - starts(k) == text.length && line.startsWith(text, starts(k))
+
+  private def statement(): Unit =
+    if count > 0 then
+      if is(0, "v") then
+        if count < 4 then fail("a vertex needs x, y and z")
+        vertices += Vec3(number(1), number(2), number(3))
+      else if is(0, "f") then face()
+      else if is(0, "vt") then
+        if count < 2 then fail("a texture coordinate needs u")
+        texture += number(1)
+        texture += (if count > 2 then number(2) else 0.0)
+        textureCount += 1
+      else if is(0, "vn") then
+        if count < 4 then fail("a normal needs x, y and z")
+        normals += Vec3(number(1), number(2), number(3))
+      else
+        val kind = word(0)
+        if !ObjReader.Ignored(kind) then skipped += kind
 
   /** A face: indices resolved against what is defined so far (negative ones count back from here). */
-  private def face(words: Array[String]): Unit =
-    val corners = words.length - 1
+  private def face(): Unit =
+    val corners = count - 1
     if corners < 3 then fail(s"a face needs at least three vertices, got $corners")
-    val v = new Array[Int](corners)
-    val t = new Array[Int](corners)
-    val n = new Array[Int](corners)
-    for k <- 0 until corners do
-      val parts = words(k + 1).split("/", -1)
-      if parts.length > 3 || parts(0).isEmpty then fail(s"malformed face vertex '${words(k + 1)}'")
-      v(k) = index(parts(0), vertexCount, "vertex")
-      t(k) =
-        if parts.length > 1 && parts(1).nonEmpty then
-          index(parts(1), textureCount, "texture coordinate")
-        else -1
-      n(k) =
-        if parts.length > 2 && parts(2).nonEmpty then index(parts(2), normalCount, "normal")
-        else -1
-    fan(v, t, n)
+    if cornerV.length < corners then
+      cornerV = new Array[Int](2 * corners); cornerT = new Array[Int](2 * corners)
+      cornerN = new Array[Int](2 * corners)
+    var k = 0
+    while k < corners do
+      corner(k, starts(k + 1), ends(k + 1))
+      k += 1
+    fan(corners)
 
-  /** The triangles (v0, vi, vi+1) of a polygon. */
-  private def fan(v: Array[Int], t: Array[Int], n: Array[Int]): Unit =
-    val textured = t.forall(_ >= 0)
-    val normed   = n.forall(_ >= 0)
-    for k <- 1 until v.length - 1 do
-      val uv      = Option.when(textured)((uvAt(t(0)), uvAt(t(k)), uvAt(t(k + 1))))
-      val corners = Option.when(normed)((normalAt(n(0)), normalAt(n(k)), normalAt(n(k + 1))))
+  /** Corner k of a face, written at line(from until to) as v, v/vt, v//vn or v/vt/vn. */
+  private def corner(k: Int, from: Int, to: Int): Unit =
+    var slash1  = to
+    var slash2  = to
+    var slashes = 0
+    var i       = from
+    while i < to do
+      if line.charAt(i) == '/' then
+        slashes += 1
+        if slashes == 1 then slash1 = i else if slashes == 2 then slash2 = i
+      i += 1
+    if slashes > 2 || slash1 == from then
+      fail(s"malformed face vertex '${line.substring(from, to)}'")
+    cornerV(k) = index(from, slash1, vertices.length, "vertex")
+    cornerT(k) =
+      if slash1 + 1 < slash2 then index(slash1 + 1, slash2, textureCount, "texture coordinate")
+      else -1
+    cornerN(k) =
+      if slash2 + 1 < to then index(slash2 + 1, to, normals.length, "normal")
+      else -1
+
+  /** The triangles (v0, vi, vi+1) of a polygon of `corners` corners. */
+  private def fan(corners: Int): Unit =
+    var textured = true
+    var normed   = true
+    var k        = 0
+    while k < corners do
+      textured &&= cornerT(k) >= 0
+      normed &&= cornerN(k) >= 0
+      k += 1
+    k = 1
+    while k < corners - 1 do
+      val uv = Option.when(textured)((uvAt(cornerT(0)), uvAt(cornerT(k)), uvAt(cornerT(k + 1))))
+      val ns =
+        Option.when(normed)((normals(cornerN(0)), normals(cornerN(k)), normals(cornerN(k + 1))))
       triangles += ObjTriangle(
-        vertexAt(v(0)),
-        vertexAt(v(k)),
-        vertexAt(v(k + 1)),
+        vertices(cornerV(0)),
+        vertices(cornerV(k)),
+        vertices(cornerV(k + 1)),
         uv,
-        corners,
-        (v(0), v(k), v(k + 1))
+        ns,
+        (cornerV(0), cornerV(k), cornerV(k + 1))
       )
+      k += 1
 
-  private def vertexAt(i: Int) = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
-  private def normalAt(i: Int) = Vec3(normals(3 * i), normals(3 * i + 1), normals(3 * i + 2))
-  private def uvAt(i: Int)     = SurfaceCoordinates(texture(2 * i), texture(2 * i + 1))
+  private def uvAt(i: Int) = SurfaceCoordinates(texture(2 * i), texture(2 * i + 1))
 
-  /** A 1-based or negative OBJ index, as a 0-based index below `defined`. */
-  private def index(text: String, defined: Int, what: String): Int =
-    val i        = text.toIntOption.getOrElse(fail(s"malformed $what index '$text'"))
-    val resolved = if i > 0 then i - 1 else if i < 0 then defined + i else -1
+  /** The 1-based or negative OBJ index at line(from until to), as a 0-based index below `defined`. */
+  private def index(from: Int, to: Int, defined: Int, what: String): Int =
+    // Perf: parsed by hand ([+-]?digits, as toIntOption accepts), without a substring.
+    var i        = from
+    val negative = i < to && line.charAt(i) == '-'
+    if i < to && (line.charAt(i) == '-' || line.charAt(i) == '+') then i += 1
+    var value = 0L
+    val first = i
+    while i < to && line.charAt(i) >= '0' && line.charAt(i) <= '9' && value <= Int.MaxValue do
+      value = 10 * value + (line.charAt(i) - '0')
+      i += 1
+    val signed = if negative then -value else value
+    if i == first || i != to || signed > Int.MaxValue || signed < Int.MinValue then
+      fail(s"malformed $what index '${line.substring(from, to)}'")
+    val n        = signed.toInt
+    val resolved = if n > 0 then n - 1 else if n < 0 then defined + n else -1
     if resolved < 0 || resolved >= defined then
-      fail(s"$what index $i is out of range ($defined defined so far)")
+      fail(s"$what index $n is out of range ($defined defined so far)")
     resolved
 
-  /** A finite decimal number: digits, sign, point and exponent only (no NaN, no hex). */
-  private def number(text: String): Double =
-    val plain = text.nonEmpty && text.forall(c =>
-      c.isDigit || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E'
-    )
-    val value = if plain then text.toDoubleOption else None
-    value.filter(_.isFinite).getOrElse(fail(s"malformed number '$text'"))
+  /** Word k as a finite decimal number (Decimal's grammar: no NaN, no hex). */
+  private def number(k: Int): Double =
+    val value = Decimal.parse(line, starts(k), ends(k))
+    if value.isNaN || value.isInfinite then fail(s"malformed number '${word(k)}'")
+    value
 
-  /** The line's words, split at spaces and tabs; a trailing comment is dropped. */
-  private def tokens(line: String): Array[String] =
+  /** Finds the line's words, split at spaces and tabs; a trailing comment is dropped. */
+  private def split(): Unit =
     val end = line.indexOf('#') match
       case -1 => line.length
       case i  => i
-    val words = mutable.ArrayBuffer.empty[String]
-    var i     = 0
+    count = 0
+    var i = 0
     while i < end do
       while i < end && Character.isWhitespace(line.charAt(i)) do i += 1
       val start = i
       while i < end && !Character.isWhitespace(line.charAt(i)) do i += 1
-      if i > start then words += line.substring(start, i)
-    words.toArray
+      if i > start then
+        if count == starts.length then
+          starts = java.util.Arrays.copyOf(starts, 2 * count)
+          ends = java.util.Arrays.copyOf(ends, 2 * count)
+        starts(count) = start
+        ends(count) = i
+        count += 1
 
   private def fail(message: String): Nothing =
     throw ObjParser.Malformed(s"$name line $lineNumber: $message")

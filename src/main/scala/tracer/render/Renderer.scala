@@ -33,18 +33,23 @@ object Renderer:
     val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
     try
       given ExecutionContext = ExecutionContext.fromExecutorService(pool)
-      // A queue of many small row tasks keeps every thread busy however uneven the rows are.
-      val done = Future.traverse(rows) { y =>
-        Future(RowFailure.guard { val row = frame.row(y); onRow(); row })
+      // A queue of many small row tasks keeps every thread busy however uneven the rows are;
+      // each writes its row straight into the picture (no row bitmaps to stack afterwards).
+      Bitmap.byRows(config.columns, rows.size) { write =>
+        val done = Future.traverse(rows) { y =>
+          Future(RowFailure.guard { frame.row(y - rows.start, y, write); onRow() })
+        }
+        Await.result(done, Duration.Inf)
       }
-      Bitmap.stack(Await.result(done, Duration.Inf))
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow()
 
   /** Renders `scene` on the calling thread alone. */
   def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
     val frame = Frame(scene, config)
-    Bitmap.stack((0 until config.rows).map(frame.row))
+    Bitmap.byRows(config.columns, config.rows)(write =>
+      (0 until config.rows).foreach(y => frame.row(y, y, write))
+    )
 
   /** Where a pixel's n × n samples lie along each axis, from its top left corner in pixel units:
     * (i + 0.5)/n for 0 ≤ i < n, so n = 1 is the pixel's centre (rendering.md, Antialiasing).
@@ -58,10 +63,10 @@ object Renderer:
     private val n          = config.samples
     private val offsets    = Renderer.sampleOffsets(n).toArray
 
-    /** Row `y` of the picture, as a bitmap one pixel high. */
-    def row(y: Int): Bitmap =
+    /** Row `y` of the picture, written as row `at` by `write` (from [[Bitmap.byRows]]). */
+    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
       val shading = Shading(world, config.mode)
-      Bitmap.tabulate(config.columns, 1)((x, _) => config.encoding.encode(pixel(shading, x, y)))
+      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y)))
 
     /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
     private def pixel(shading: Shading, x: Int, y: Int): Colour =

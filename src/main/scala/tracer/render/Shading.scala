@@ -12,19 +12,19 @@ import tracer.scene.{Pigment, Surface}
   * Not thread-safe: it keeps scratch space for its queries, so each render task makes its own.
   */
 final class Shading(world: World, mode: ShadingMode):
-  private val stack   = world.newStack()
-  private val shadows = Shadows(world, stack)
+  private val query   = world.newQuery()
+  private val shadows = Shadows(world, query)
 
   /** The colour seen along `ray`, allowing `depth` more reflections or refractions. */
   def colour(ray: Ray, depth: Int): Colour = trace(ray, depth, Nil)
 
   /** The colour seen along `ray` from inside the objects `insides` (innermost first). */
   private def trace(ray: Ray, depth: Int, insides: List[Int]): Colour =
-    val i = world.nearest(ray, stack)
+    val i = world.nearest(ray, query)
     if i < 0 then world.background
     else
       val shape  = world.shape(i)
-      val hit    = Shape.hitAt(shape, ray, Shape.distance(shape, ray))
+      val hit    = Shape.hitAt(shape, ray, query.distance)
       val normal = Shape.shadingNormal(shape, hit, ray)
       mode match
         case ShadingMode.Quick => pigment(i, hit) * Math.abs(normal.dot(ray.direction))

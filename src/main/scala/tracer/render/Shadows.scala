@@ -10,21 +10,29 @@ import tracer.scene.AreaLight
   * Not thread-safe: it keeps scratch space, so each [[Shading]] makes its own.
   *
   * @param world the scene
-  * @param stack the BVH walk's scratch space, from `world.newStack()`
+  * @param query the queries' scratch space, from `world.newQuery()`
   */
-final class Shadows(world: World, stack: Array[Int]):
+final class Shadows(world: World, query: Query):
   // Perf: the area lights' grid of samples, reused for every shading point (a sample is computed
   // once and shared by the cells that have it as a corner; −1 marks one not yet computed). Sized
   // for the scene's largest area light: a Shading is made per row, so a full 64 × 64 grid for a
   // scene without area lights was 32 KB a row (JFR allocation samples, docs/performance.md).
   private var grid = new Array[Double](world.largestAreaLight)
 
+  // Perf: the sub-light positions centre + offset(u, v) of the world's area lights, computed once
+  // (x, y, z at 3(u·samplesB + v)), so a sample makes no Vec3 or Ray (docs/performance.md, round 4).
+  private val subLights: IArray[Array[Double]] =
+    world.lights.map(l => l.area.fold(Array.emptyDoubleArray)(Shadows.positions(l.location, _)))
+  // The positions for a light not of this world (tests), made on demand.
+  private var strayLight: Option[AreaLight] = None
+  private var strayCentre                   = Vec3.Zero
+  private var strayPositions                = Array.emptyDoubleArray
+
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
     */
   def point(from: Vec3, toward: Vec3, reach: Double): Double =
-    if !world.transmits then if world.occluded(Ray(from, toward), reach, stack) then 0.0 else 1.0
-    else transmittance(from, toward, reach)
+    pointAlong(from, toward.x, toward.y, toward.z, reach)
 
   /** The share of an area light centred at `centre` that reaches `from`, as POV-Ray 3.7 computes
     * it without `adaptive` (`Trace::TraceAreaLightSubsetShadowRay`): the grid's four corners are
@@ -35,11 +43,30 @@ final class Shadows(world: World, stack: Array[Int]):
     val samples = light.samplesA * light.samplesB
     if grid.length < samples then grid = new Array[Double](samples) // a light not of this world
     java.util.Arrays.fill(grid, 0, samples, -1.0)
-    cell(from, centre, light, 0, 0, light.samplesA - 1, light.samplesB - 1)
+    val positions = positionsOf(centre, light)
+    cell(from, positions, light, 0, 0, light.samplesA - 1, light.samplesB - 1)
+
+  /** The sub-light positions of the area light `light` centred at `centre`. */
+  private def positionsOf(centre: Vec3, light: AreaLight): Array[Double] =
+    var k     = 0
+    var found = -1
+    while found < 0 && k < world.lights.length do
+      val l = world.lights(k)
+      l.area match
+        case Some(a) if (a eq light) && l.location == centre => found = k
+        case _                                               => ()
+      k += 1
+    if found >= 0 then subLights(found)
+    else
+      if !strayLight.exists(_ eq light) || strayCentre != centre then
+        strayPositions = Shadows.positions(centre, light)
+        strayLight = Some(light)
+        strayCentre = centre
+      strayPositions
 
   private def cell(
       from: Vec3,
-      centre: Vec3,
+      positions: Array[Double],
       light: AreaLight,
       u1: Int,
       v1: Int,
@@ -47,41 +74,91 @@ final class Shadows(world: World, stack: Array[Int]):
       v2: Int
   ): Double =
     if u2 - u1 > 1 || v2 - v1 > 1 then
-      val (lowU, highU) = ((u1 + u2) / 2, (u1 + u2 + 1) / 2)
-      val (lowV, highV) = ((v1 + v2) / 2, (v1 + v2 + 1) / 2)
-      (cell(from, centre, light, u1, v1, lowU, lowV) +
-        cell(from, centre, light, highU, v1, u2, lowV) +
-        cell(from, centre, light, u1, highV, lowU, v2) +
-        cell(from, centre, light, highU, highV, u2, v2)) * 0.25
+      val lowU  = (u1 + u2) / 2
+      val highU = (u1 + u2 + 1) / 2
+      val lowV  = (v1 + v2) / 2
+      val highV = (v1 + v2 + 1) / 2
+      (cell(from, positions, light, u1, v1, lowU, lowV) +
+        cell(from, positions, light, highU, v1, u2, lowV) +
+        cell(from, positions, light, u1, highV, lowU, v2) +
+        cell(from, positions, light, highU, highV, u2, v2)) * 0.25
     else
-      (sample(from, centre, light, u1, v1) + sample(from, centre, light, u2, v1) +
-        sample(from, centre, light, u1, v2) + sample(from, centre, light, u2, v2)) * 0.25
+      (sample(from, positions, light, u1, v1) + sample(from, positions, light, u2, v1) +
+        sample(from, positions, light, u1, v2) + sample(from, positions, light, u2, v2)) * 0.25
 
   /** The share of sub-light (u, v) that reaches `from`, computed once per shading point. */
-  private def sample(from: Vec3, centre: Vec3, light: AreaLight, u: Int, v: Int): Double =
+  private def sample(
+      from: Vec3,
+      positions: Array[Double],
+      light: AreaLight,
+      u: Int,
+      v: Int
+  ): Double =
     val k = u * light.samplesB + v
     if grid(k) < 0 then
-      val toLight = centre + light.offset(u, v) - from
-      val reach   = toLight.length
-      grid(k) = if reach > 0 then point(from, toLight / reach, reach) else 1.0
+      // toLight = (centre + offset) − from, its length and its direction, in plain doubles.
+      val tx    = positions(3 * k) - from.x
+      val ty    = positions(3 * k + 1) - from.y
+      val tz    = positions(3 * k + 2) - from.z
+      val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
+      grid(k) =
+        if reach > 0 then pointAlong(from, tx / reach, ty / reach, tz / reach, reach) else 1.0
     grid(k)
 
-  /** The product of the `transmit` of every surface the ray (from, toward) crosses before
-    * `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
+  /** [[point]] with the direction as three doubles. */
+  private def pointAlong(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
+    if !world.transmits then
+      if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0 else 1.0
+    else transmittance(from, dx, dy, dz, reach)
+
+  /** The product of the `transmit` of every surface the ray from `from` in direction d crosses
+    * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
     */
-  private def transmittance(from: Vec3, toward: Vec3, reach: Double): Double =
-    var origin = from
-    var left   = reach
-    var share  = 1.0
+  private def transmittance(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
+    // Mutable walk state: the origin moves past each surface crossed.
+    var ox    = from.x
+    var oy    = from.y
+    var oz    = from.z
+    var left  = reach
+    var share = 1.0
     while share > 0 && left > 0 do
-      val ray = Ray(origin, toward)
-      val i   = world.nearest(ray, stack)
-      val t   = if i < 0 then Double.PositiveInfinity else Shape.distance(world.shape(i), ray)
-      if t < left then
-        val leaf = if world.hasLeafSurfaces(i) then Shape.hitAt(world.shape(i), ray, t).leaf else 0
-        share *= world.surface(i, leaf).transmit
+      // Only hits before what is left of the way count (t ≤ left, then t < left below).
+      val i = world.nearestAlong(ox, oy, oz, dx, dy, dz, left, query)
+      val t = query.distance
+      if i >= 0 && t < left then
+        share *= world.surface(i, leafAt(i, ox, oy, oz, dx, dy, dz, t)).transmit
         // Step just past the surface, so the next query does not find it again.
-        origin = ray.at(t + Shading.Epsilon)
-        left -= t + Shading.Epsilon
+        val step = t + Shading.Epsilon
+        ox = ox + dx * step
+        oy = oy + dy * step
+        oz = oz + dz * step
+        left -= step
       else left = 0
     share
+
+  /** Which leaf of shape `i` the ray from (ox, oy, oz) along d meets at `t`: 0 unless the shape
+    * shows a surface per leaf (a CSG combination), which takes the general path's full hit.
+    */
+  private def leafAt(
+      i: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      t: Double
+  ): Int =
+    if !world.hasLeafSurfaces(i) then 0
+    else Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
+
+/** Precomputation for [[Shadows]]. */
+private object Shadows:
+  /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
+  def positions(centre: Vec3, light: AreaLight): Array[Double] =
+    val out = new Array[Double](3 * light.samplesA * light.samplesB)
+    for u <- 0 until light.samplesA; v <- 0 until light.samplesB do
+      val p = centre + light.offset(u, v)
+      val k = u * light.samplesB + v
+      out(3 * k) = p.x; out(3 * k + 1) = p.y; out(3 * k + 2) = p.z
+    out

@@ -4,15 +4,20 @@ import tracer.geometry.{Ray, Shape}
 import tracer.scene.{Light, Scene, SceneObject, Surface}
 
 /** A scene compiled for tracing: its shapes and surfaces in flat arrays, the bounded shapes in a
-  * [[Bvh]], the planes (unbounded) in a list of their own. Built once per picture from the
-  * immutable [[tracer.scene.Scene]] and never changed after.
+  * [[Bvh]] (the ray kernel), the unbounded ones (planes) in a list of their own; each shape tested
+  * as its [[Route]] says. Built once per picture from the immutable [[tracer.scene.Scene]] and
+  * never changed after.
   */
 final class World(scene: Scene):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
-  private val planes: Array[Int] = shapes.indices.filterNot(i => Bvh.isBounded(shapes(i))).toArray
-  private val bvh                = Bvh(shapes.toIndexedSeq)
+  private val unbounded                   =
+    Primitives(
+      shapes.toIndexedSeq,
+      shapes.indices.filter(i => Shape.bounds(shapes(i)).isEmpty).toArray
+    )
+  private val bvh = Bvh(shapes.toIndexedSeq)
 
   /** The lights, in document order. */
   val lights: IArray[Light] = IArray.from(scene.lights)
@@ -40,30 +45,78 @@ final class World(scene: Scene):
   def hasLeafSurfaces(i: Int): Boolean = objects(i).leafSurfaces.nonEmpty
 
   /** Scratch space for one thread's queries ([[nearest]], [[occluded]]). */
-  def newStack(): Array[Int] = new Array[Int](Bvh.StackSize)
+  def newQuery(): Query = Query()
 
   /** The index of the shape `ray` hits first (smallest t > 0; the first in document order on a
-    * tie), or −1 when it hits nothing. `stack` comes from [[newStack]] and is not shared.
+    * tie), or −1 when it hits nothing; its distance t is left in `query.distance` (+∞ for none).
+    * `query` comes from [[newQuery]] and is not shared between threads.
     */
-  def nearest(ray: Ray, stack: Array[Int]): Int =
-    // Perf: planes in a plain loop, then the hierarchy, pruned by the nearest plane.
+  def nearest(ray: Ray, query: Query): Int =
+    val o = ray.origin
+    val d = ray.direction
+    nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, query)
+
+  /** As [[nearest]] for the ray from (ox, oy, oz) in unit direction (dx, dy, dz), counting only
+    * hits at t ≤ `limit`.
+    */
+  def nearestAlong(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Int =
+    // Perf: the unbounded shapes in a plain loop (in index order, so the first wins a tie), then
+    // the hierarchy, pruned by the nearest of them.
     var best  = Int.MaxValue
-    var bestT = Double.PositiveInfinity
+    var bestT = limit
     var k     = 0
-    while k < planes.length do
-      val t = Shape.distance(shapes(planes(k)), ray)
-      if t < bestT then
+    while k < unbounded.size do
+      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz)
+      if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
         bestT = t
-        best = planes(k)
+        best = unbounded.index(k)
       k += 1
-    val winner = bvh.nearest(ray, bestT, best, stack)
-    if winner == Int.MaxValue then -1 else winner
+    val winner = bvh.nearest(ox, oy, oz, dx, dy, dz, bestT, best, query)
+    if winner == Int.MaxValue then
+      query.distance = Double.PositiveInfinity
+      -1
+    else winner
 
   /** True when some shape is hit by `ray` at a t with 0 < t < `limit` (a shadow test). */
-  def occluded(ray: Ray, limit: Double, stack: Array[Int]): Boolean =
+  def occluded(ray: Ray, limit: Double, query: Query): Boolean =
+    val o = ray.origin
+    val d = ray.direction
+    occludedAlong(o.x, o.y, o.z, d.x, d.y, d.z, limit, query)
+
+  /** As [[occluded]] for the ray from (ox, oy, oz) in unit direction (dx, dy, dz). */
+  def occludedAlong(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
     var k = 0
-    while k < planes.length && !(Shape.distance(shapes(planes(k)), ray) < limit) do k += 1
-    k < planes.length || bvh.occluded(ray, limit, stack)
+    while k < unbounded.size && !(Primitives.distance(
+        unbounded,
+        k,
+        limit,
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz
+      ) < limit)
+    do k += 1
+    k < unbounded.size || bvh.occluded(ox, oy, oz, dx, dy, dz, limit, query)
 
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).

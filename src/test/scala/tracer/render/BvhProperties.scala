@@ -44,19 +44,62 @@ class BvhProperties extends ScalaCheckSuite:
 
   property("nearest finds the shape that testing every shape finds, ties included"):
     forAll(world, Gen.listOfN(50, ray)) { (w, rays) =>
-      val stack = w.newStack()
-      rays.foreach(r => assertEquals(w.nearest(r, stack), w.nearestByBruteForce(r), r.toString))
+      val query = w.newQuery()
+      rays.foreach(r => assertEquals(w.nearest(r, query), w.nearestByBruteForce(r), r.toString))
     }
+
+  property("nearest's distance is Shape.distance of the winner, bit for bit (+∞ for a miss)"):
+    forAll(world, Gen.listOfN(50, ray)) { (w, rays) =>
+      val query = w.newQuery()
+      rays.foreach { r =>
+        val i        = w.nearest(r, query)
+        val expected = if i < 0 then Double.PositiveInfinity else Shape.distance(w.shape(i), r)
+        assertEquals(
+          java.lang.Double.doubleToRawLongBits(query.distance),
+          java.lang.Double.doubleToRawLongBits(expected),
+          r.toString
+        )
+      }
+    }
+
+  property("nearestAlong with a limit finds the nearest hit at t ≤ limit, or none"):
+    forAll(world, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (w, rays, limit) =>
+      val query = w.newQuery()
+      rays.foreach { r =>
+        val i        = w.nearestByBruteForce(r)
+        val t        = if i < 0 then Double.PositiveInfinity else Shape.distance(w.shape(i), r)
+        val expected = if t <= limit then i else -1
+        val o        = r.origin
+        val d        = r.direction
+        assertEquals(
+          w.nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, limit, query),
+          expected,
+          r.toString
+        )
+      }
+    }
+
+  test("shapes hit at the same distance: the lowest index wins, wherever they sit in the tree"):
+    // Many copies of one triangle and sphere, interleaved: every ray that hits them ties.
+    val tile   = Triangle(Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(-1, 0, 1))
+    val ball   = Sphere(Vec3(3, 0, 0), 1)
+    val shapes = (0 until 40).flatMap(_ => List(ball, tile))
+    val w = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = shapes.map(SceneObject(_))))
+    val query = w.newQuery()
+    assertEquals(w.nearest(Ray(Vec3(-0.5, 3, -0.5), -Vec3.UnitY), query), 1)
+    assertEquals(query.distance, 3.0)
+    assertEquals(w.nearest(Ray(Vec3(3, 5, 0), -Vec3.UnitY), query), 0)
+    assertEquals(query.distance, 4.0)
 
   property("occluded agrees with testing every shape"):
     forAll(world, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (w, rays, limit) =>
-      val stack = w.newStack()
+      val query = w.newQuery()
       rays.foreach { r =>
         val expected = w.nearestByBruteForce(r) >= 0 && Shape.distance(
           w.shape(w.nearestByBruteForce(r)),
           r
         ) < limit
-        assertEquals(w.occluded(r, limit, stack), expected, r.toString)
+        assertEquals(w.occluded(r, limit, query), expected, r.toString)
       }
     }
 
@@ -66,11 +109,11 @@ class BvhProperties extends ScalaCheckSuite:
     val down  = Ray(Vec3(-0.5, 3, -0.5), -Vec3.UnitY)
     for order <- List(List(floor, tile), List(tile, floor)) do
       val w = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = order.map(SceneObject(_))))
-      assertEquals(w.nearest(down, w.newStack()), 0)
+      assertEquals(w.nearest(down, w.newQuery()), 0)
 
   test("a large grid of spheres builds a tree, not a single leaf"):
     val spheres = for x <- 0 until 20; z <- 0 until 20 yield SceneObject(Sphere(Vec3(x, 0, z), 0.4))
     val w       = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = spheres))
     val bvh     = Bvh(spheres.map(_.shape))
     assert(bvh.nodeCount > 100, bvh.nodeCount.toString)
-    assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newStack()), 105)
+    assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newQuery()), 105)

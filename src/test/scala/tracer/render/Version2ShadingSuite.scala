@@ -186,7 +186,7 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
   private val area             = AreaLight(Vec3(2, 0, 0), Vec3(0, 0, 1), 5, 1)
   private def share(x: Double) =
     val world = World(Scene(camera, objects = List(blocker)))
-    Shadows(world, world.newStack()).area(Vec3(x, 0, 0), Vec3(0, 4, 0), area)
+    Shadows(world, world.newQuery()).area(Vec3(x, 0, 0), Vec3(0, 4, 0), area)
 
   test("an area light's penumbra spans exactly what the grid's end lights see past the blocker"):
     assertEquals(share(1.01), 1.0)

@@ -5,7 +5,7 @@ import org.openjdk.jmh.annotations.*
 import tracer.demo.BenchScenes
 import tracer.geometry.Ray
 import tracer.math.Vec3
-import tracer.render.{CameraConfig, Projection, World}
+import tracer.render.{CameraConfig, Projection, Query, World}
 import tracer.scene.Scene
 
 /** Nearest-hit and shadow queries against the benchmark scenes, with and without the hierarchy.
@@ -20,14 +20,14 @@ class WorldBench:
   var sceneName: String = ""
 
   var world: World = null
-  var stack: Array[Int] = null
+  var query: Query = null
   var rays: Array[Ray] = null
   var index = 0
 
   @Setup def setup(): Unit =
     val scene: Scene = BenchScenes.scene(sceneName)
     world = World(scene)
-    stack = world.newStack()
+    query = world.newQuery()
     // 1024 primary rays spread over the picture.
     val projection = Projection(scene.camera, CameraConfig.forCamera(scene.camera, 32))
     rays = Array.tabulate(1024)(i => projection.ray(i % 32 + 0.5, (i / 32) % 18 + 0.5))
@@ -37,7 +37,7 @@ class WorldBench:
     rays(index)
 
   /** The nearest hit through the hierarchy. */
-  @Benchmark def nearest: Int = world.nearest(next(), stack)
+  @Benchmark def nearest: Int = world.nearest(next(), query)
 
   /** The nearest hit by testing every shape: what the hierarchy saves. */
   @Benchmark def nearestBruteForce: Int = world.nearestByBruteForce(next())
@@ -45,4 +45,4 @@ class WorldBench:
   /** A shadow ray from the middle of the scene towards a light, stopping at the first blocker. */
   @Benchmark def occluded: Boolean =
     val r = next()
-    world.occluded(Ray(Vec3(0, 0.05, 2), (Vec3(-5, 8, -6) - Vec3(0, 0.05, 2) + r.direction).normalised.get), 12.0, stack)
+    world.occluded(Ray(Vec3(0, 0.05, 2), (Vec3(-5, 8, -6) - Vec3(0, 0.05, 2) + r.direction).normalised.get), 12.0, query)

@@ -1,0 +1,202 @@
+package tracer.render
+
+import tracer.geometry.Shape
+
+/** A built hierarchy of `size` nodes as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
+  * high x, y, z), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
+  * one follows it) and 0, for a leaf the first of its primitives and their count (≥ 1).
+  * `order` lists the indexed shapes' indices in leaf order.
+  */
+private[render] final class Tree(
+    val size: Int,
+    val boxes: Array[Double],
+    val links: Array[Int],
+    val order: Array[Int]
+)
+
+/** Top-down binned-SAH construction (Wald 2007) of a [[Tree]] over the shapes that have
+  * [[tracer.geometry.Bounds]].
+  *
+  * Perf: primitive arrays and while loops throughout; the arrays it fills become the immutable
+  * tree. The first version used Scala collections and took 0.5 s (cold) for 20,000 triangles;
+  * this one takes about a tenth of that (docs/performance.md, step 4).
+  */
+private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
+  import BvhBuilder.*
+
+  // Each primitive's box (padded so flat boxes, like a triangle in a plane, have depth) and
+  // centroid, at its position in `prims` (3k..3k+2), moved with it by the partitions.
+  // Perf: so every pass of a split reads memory in order; indexed by shape they were read at
+  // random, and a million-triangle build waited on the cache (docs/performance.md, round 4).
+  private val boxLo  = new Array[Double](3 * shapes.length)
+  private val boxHi  = new Array[Double](3 * shapes.length)
+  private val centre = new Array[Double](3 * shapes.length)
+  // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
+  // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
+  private val prims =
+    val found = Array.newBuilder[Int]
+    var i     = 0
+    var k     = 0
+    while i < shapes.length do
+      Shape.bounds(shapes(i)) match
+        case Some(b) =>
+          found += i
+          setBox(k, 0, b.lo.x, b.hi.x)
+          setBox(k, 1, b.lo.y, b.hi.y)
+          setBox(k, 2, b.lo.z, b.hi.z)
+          k += 1
+        case None => ()
+      i += 1
+    found.result()
+
+  // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
+  private var size  = 0
+  private val boxes = new Array[Double](6 * Math.max(1, 2 * prims.length - 1))
+  private val links = new Array[Int](2 * Math.max(1, 2 * prims.length - 1))
+
+  // Scratch space for one split: per-bin counts and boxes, and the sweeps' results.
+  private val binCount = new Array[Int](Bins)
+  private val binLo    = new Array[Double](3 * Bins)
+  private val binHi    = new Array[Double](3 * Bins)
+  private val leftCost = new Array[Double](Bins)
+  private val box      = new Array[Double](6)
+
+  /** Builds the tree. Its arrays may be longer than its nodes (`Tree.size` says how many). */
+  def build(): Tree =
+    if prims.nonEmpty then split(newNode(), 0, prims.length, 0)
+    Tree(size, boxes, links, prims)
+
+  private def setBox(i: Int, axis: Int, low: Double, high: Double): Unit =
+    val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
+    boxLo(3 * i + axis) = low - pad
+    boxHi(3 * i + axis) = high + pad
+    centre(3 * i + axis) = (low + high) / 2
+
+  private def newNode(): Int =
+    size += 1
+    size - 1
+
+  /** The surface area of the box with low corner b(l..l+2) and high corner b(h..h+2). */
+  private def area(b: Array[Double], l: Int, h: Int): Double =
+    val dx = b(h) - b(l)
+    val dy = b(h + 1) - b(l + 1)
+    val dz = b(h + 2) - b(l + 2)
+    if dx < 0 then 0 else 2 * (dx * dy + dy * dz + dz * dx)
+
+  /** Fills node `node` with prims(start until end), splitting it while that pays. */
+  private def split(node: Int, start: Int, end: Int, depth: Int): Unit =
+    // The node's box, and the box of the primitives' centroids.
+    var cl0, cl1, cl2 = Double.PositiveInfinity
+    var ch0, ch1, ch2 = Double.NegativeInfinity
+    val nb            = 6 * node
+    for a <- 0 until 3 do
+      boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
+    var k = start
+    while k < end do
+      var a = 0
+      while a < 3 do
+        boxes(nb + a) = boxes(nb + a) min boxLo(3 * k + a)
+        boxes(nb + 3 + a) = boxes(nb + 3 + a) max boxHi(3 * k + a)
+        a += 1
+      cl0 = cl0 min centre(3 * k); cl1 = cl1 min centre(3 * k + 1)
+      cl2 = cl2 min centre(3 * k + 2)
+      ch0 = ch0 max centre(3 * k); ch1 = ch1 max centre(3 * k + 1)
+      ch2 = ch2 max centre(3 * k + 2)
+      k += 1
+    val n = end - start
+    // Split along the axis where the centroids spread most.
+    val (axis, low, extent) =
+      if ch0 - cl0 >= ch1 - cl1 && ch0 - cl0 >= ch2 - cl2 then (0, cl0, ch0 - cl0)
+      else if ch1 - cl1 >= ch2 - cl2 then (1, cl1, ch1 - cl1)
+      else (2, cl2, ch2 - cl2)
+    def leaf(): Unit =
+      links(2 * node) = start; links(2 * node + 1) = n
+    if n <= MaxLeaf / 2 || extent <= 0 || depth >= Bvh.StackSize / 2 then leaf()
+    else
+      def bin(k: Int): Int =
+        Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
+      // Bin the primitives along the axis.
+      java.util.Arrays.fill(binCount, 0)
+      java.util.Arrays.fill(binLo, Double.PositiveInfinity)
+      java.util.Arrays.fill(binHi, Double.NegativeInfinity)
+      k = start
+      while k < end do
+        val b = bin(k)
+        binCount(b) += 1
+        var a = 0
+        while a < 3 do
+          binLo(3 * b + a) = binLo(3 * b + a) min boxLo(3 * k + a)
+          binHi(3 * b + a) = binHi(3 * b + a) max boxHi(3 * k + a)
+          a += 1
+        k += 1
+      // Sweep from the left: leftCost(s) = count · area of bins 0..s.
+      sweepStart()
+      var c = 0
+      var s = 0
+      while s < Bins - 1 do
+        c += binCount(s)
+        grow(s)
+        leftCost(s) = c * area(box, 0, 3)
+        s += 1
+      // Sweep from the right, keeping the cheapest split.
+      sweepStart()
+      c = 0
+      var best     = 0
+      var bestCost = Double.PositiveInfinity
+      s = Bins - 1
+      while s > 0 do
+        c += binCount(s)
+        grow(s)
+        val cost = leftCost(s - 1) + c * area(box, 0, 3)
+        if cost < bestCost then
+          bestCost = cost
+          best = s - 1
+        s -= 1
+      if n <= MaxLeaf && bestCost >= n * area(boxes, nb, nb + 3) then leaf()
+      else
+        // Partition in place: bins 0..best to the left.
+        var i = start
+        var j = end - 1
+        while i <= j do
+          if bin(i) <= best then i += 1
+          else
+            swap(i, j)
+            j -= 1
+        val mid  = if i == start || i == end then (start + end) / 2 else i
+        val left = newNode()
+        val _    = newNode() // the right child, at left + 1
+        links(2 * node) = left; links(2 * node + 1) = 0
+        split(left, start, mid, depth + 1)
+        split(left + 1, mid, end, depth + 1)
+
+  /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
+  private def swap(i: Int, j: Int): Unit =
+    val p = prims(i); prims(i) = prims(j); prims(j) = p
+    var a = 0
+    while a < 3 do
+      exchange(boxLo, 3 * i + a, 3 * j + a)
+      exchange(boxHi, 3 * i + a, 3 * j + a)
+      exchange(centre, 3 * i + a, 3 * j + a)
+      a += 1
+
+  private def exchange(xs: Array[Double], i: Int, j: Int): Unit =
+    val x = xs(i); xs(i) = xs(j); xs(j) = x
+
+  private def sweepStart(): Unit =
+    java.util.Arrays.fill(box, 0, 3, Double.PositiveInfinity)
+    java.util.Arrays.fill(box, 3, 6, Double.NegativeInfinity)
+
+  private def grow(b: Int): Unit =
+    var a = 0
+    while a < 3 do
+      box(a) = box(a) min binLo(3 * b + a)
+      box(3 + a) = box(3 + a) max binHi(3 * b + a)
+      a += 1
+
+/** Construction constants of [[BvhBuilder]]. */
+private[render] object BvhBuilder:
+  /** The most shapes a leaf holds when splitting would cost more. */
+  val MaxLeaf = 4
+
+  /** SAH bins per split. */
+  val Bins = 16

@@ -1,0 +1,203 @@
+package tracer.render
+
+import tracer.geometry.{Box, Cone, Csg, Placed, Plane, Ray, Shape, Sphere, Torus, Triangle}
+import tracer.math.Vec3
+
+/** Which way a shape is traced: the ray kernel's fast paths or the general one. */
+enum Route:
+  /** A sphere, tested from its centre and Sr² in the kernel's flat arrays. */
+  case FastSphere
+
+  /** A triangle, tested from its precomputed constants in the kernel's flat arrays. */
+  case FastTriangle
+
+  /** A plane (unbounded: tested on every ray), from its normal and D in flat arrays. */
+  case FastPlane
+
+  /** Any other shape, tested with [[tracer.geometry.Shape.distance]]; it joins the hierarchy when
+    * [[tracer.geometry.Shape.bounds]] gives it bounds and is tested on every ray otherwise.
+    */
+  case General
+
+/** The route of each shape. */
+object Route:
+  /** The route `shape` takes: the one place that decides between the kernel and the general path. */
+  def of(shape: Shape): Route = shape match
+    case _: Sphere                              => FastSphere
+    case _: Triangle                            => FastTriangle
+    case _: Plane                               => FastPlane
+    case _: (Box | Cone | Torus | Placed | Csg) => General
+
+/** Shapes as flat primitive arrays (the bounded ones in the hierarchy's leaf order, the unbounded
+  * ones in a list of their own): the data
+  * of primitive k at `Primitives.Stride * k` (see [[Primitives.store]]), its route, and its index
+  * among the scene's shapes. Immutable after construction.
+  *
+  * @param shapes all the scene's shapes
+  * @param order  the indices in `shapes` of the primitives, in leaf order
+  */
+final class Primitives(shapes: IndexedSeq[Shape], order: Array[Int]):
+  // Perf: everything a leaf test reads, contiguous per primitive: no Shape object is reached on
+  // the fast paths (docs/performance.md, round 4).
+  private[render] val data  = new Array[Double](Primitives.Stride * order.length)
+  private[render] val kind  = new Array[Byte](order.length)
+  private[render] val index = order
+  private[render] val all   = shapes
+
+  locally {
+    // Perf: a plain loop filling the arrays, once per world.
+    var k = 0
+    while k < order.length do
+      kind(k) = Primitives.store(shapes(order(k)), data, Primitives.Stride * k).ordinal.toByte
+      k += 1
+  }
+
+  /** The number of primitives. */
+  def size: Int = order.length
+
+/** The layout of [[Primitives]] and its leaf tests. */
+object Primitives:
+  /** Doubles per primitive. */
+  val Stride: Int = 16
+
+  private[render] val SphereKind: Byte   = Route.FastSphere.ordinal.toByte
+  private[render] val TriangleKind: Byte = Route.FastTriangle.ordinal.toByte
+  private[render] val PlaneKind: Byte    = Route.FastPlane.ordinal.toByte
+
+  /** Writes what the leaf test of `shape` reads into `data` from `at`, and returns its route.
+    *
+    * A sphere: Sc, Sr². A plane: Pn, D. A triangle: Pn, D, T0, a, b, b · b, a · b and the denominator, copied from
+    * the [[tracer.geometry.Triangle]] so the kernel computes with exactly its values. A shape of
+    * the general route stores nothing (its case here is `()`): its test reads the shape itself.
+    */
+  def store(shape: Shape, data: Array[Double], at: Int): Route =
+    val route = Route.of(shape)
+    shape match
+      case s: Sphere =>
+        data(at) = s.centre.x; data(at + 1) = s.centre.y; data(at + 2) = s.centre.z
+        data(at + 3) = s.radiusSquared
+      case t: Triangle =>
+        data(at) = t.normal.x; data(at + 1) = t.normal.y; data(at + 2) = t.normal.z
+        data(at + 3) = t.distance
+        data(at + 4) = t.t0.x; data(at + 5) = t.t0.y; data(at + 6) = t.t0.z
+        data(at + 7) = t.a.x; data(at + 8) = t.a.y; data(at + 9) = t.a.z
+        data(at + 10) = t.b.x; data(at + 11) = t.b.y; data(at + 12) = t.b.z
+        data(at + 13) = t.bb; data(at + 14) = t.ab; data(at + 15) = t.denominator
+      case p: Plane =>
+        data(at) = p.normal.x; data(at + 1) = p.normal.y; data(at + 2) = p.normal.z
+        data(at + 3) = p.distance
+      case _: (Box | Cone | Torus | Placed | Csg) => ()
+    route
+
+  /** The distance along the ray (origin o, unit direction d) to primitive `k`, or +∞ on a miss:
+    * bit for bit what [[tracer.geometry.Shape.distance]] gives for its shape, the same operations
+    * in the same order on the same values. A triangle farther than `cutoff` may be reported as a
+    * miss without finishing its test. Only the general route makes a [[Ray]].
+    */
+  inline def distance(
+      p: Primitives,
+      k: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val kd = p.kind(k)
+    if kd == TriangleKind then triangle(p.data, Stride * k, cutoff, ox, oy, oz, dx, dy, dz)
+    else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
+    else if kd == PlaneKind then plane(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
+    else general(p.all(p.index(k)), ox, oy, oz, dx, dy, dz)
+
+  /** The general route: [[tracer.geometry.Shape.distance]] on a ray made for it. */
+  private def general(
+      shape: Shape,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double = Shape.distance(shape, Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)))
+
+  /** Shape.planeDistance on flat data: equations 24–27. */
+  private inline def plane(
+      data: Array[Double],
+      at: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val nx = data(at)
+    val ny = data(at + 1)
+    val nz = data(at + 2)
+    val vd = nx * dx + ny * dy + nz * dz
+    if vd == 0 then Double.PositiveInfinity
+    else
+      val t = (data(at + 3) - (nx * ox + ny * oy + nz * oz)) / vd
+      if t > 0 then t else Double.PositiveInfinity
+
+  /** Shape.sphereDistance on flat data: equations 17–21. */
+  private inline def sphere(
+      data: Array[Double],
+      at: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val ocx  = data(at) - ox
+    val ocy  = data(at + 1) - oy
+    val ocz  = data(at + 2) - oz
+    val r2   = data(at + 3)
+    val l2oc = ocx * ocx + ocy * ocy + ocz * ocz
+    val tca  = ocx * dx + ocy * dy + ocz * dz
+    val t2hc = r2 - l2oc + tca * tca
+    if l2oc < r2 then tca + Math.sqrt(t2hc)
+    else if tca < 0 || t2hc < 0 then Double.PositiveInfinity
+    else
+      val t = tca - Math.sqrt(t2hc)
+      if t > 0 then t else Double.PositiveInfinity
+
+  /** Shape.triangleDistance on flat data: the plane test, then equations 32–34. */
+  private inline def triangle(
+      data: Array[Double],
+      at: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val nx = data(at)
+    val ny = data(at + 1)
+    val nz = data(at + 2)
+    val vd = nx * dx + ny * dy + nz * dz
+    if vd == 0 then Double.PositiveInfinity
+    else
+      val t = (data(at + 3) - (nx * ox + ny * oy + nz * oz)) / vd
+      // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped; the
+      // test of a hit that counts is unchanged (u's sign is final before v is computed).
+      if !(t > 0) || t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
+      else
+        val qx = ox + dx * t - data(at + 4)
+        val qy = oy + dy * t - data(at + 5)
+        val qz = oz + dz * t - data(at + 6)
+        val qa = qx * data(at + 7) + qy * data(at + 8) + qz * data(at + 9)
+        val qb = qx * data(at + 10) + qy * data(at + 11) + qz * data(at + 12)
+        val bb = data(at + 13)
+        val ab = data(at + 14)
+        val u  = (bb * qa - ab * qb) / data(at + 15)
+        if !(u >= 0) then Double.PositiveInfinity
+        else
+          val v = (qb - u * ab) / bb
+          if v >= 0 && u + v <= 1 then t else Double.PositiveInfinity
