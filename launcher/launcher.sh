@@ -82,9 +82,9 @@ tracer_choose_java() {
     echo "tracer: no Java found: install a Java runtime of version $tracer_min_java or newer, or set TRACER_JAVA" >&2
     return 1
   fi
-  local real=() best='' best_feature=0 unknown='' i home version feature
-  # One readlink for all: each candidate's real path (a JDK linked twice counts once).
-  mapfile -t real < <(readlink -f -- "${candidates[@]}" 2>/dev/null || printf '%s\n' "${candidates[@]}")
+  local real=() best='' best_feature=0 unknown='' i home version feature line
+  # One readlink for all: each candidate's real path, where its release file is.
+  while IFS= read -r line; do real+=("$line"); done < <(readlink -f -- "${candidates[@]}" 2>/dev/null)
   for i in "${!candidates[@]}"; do
     home=${real[$i]:-${candidates[$i]}}
     home=${home%/bin/java}
@@ -168,8 +168,8 @@ tracer_cache() {
   stamp=$(stat -L -c '%s-%Y' -- "$jar" 2>/dev/null) || return 0
   key=$(tracer_cksum "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}")
   name="tracer-java$tracer_java_version-$key-jar$stamp.$kind"
-  local dirs=()
-  mapfile -t dirs < <(tracer_cache_dirs "$jar")
+  local dirs=() line
+  while IFS= read -r line; do dirs+=("$line"); done < <(tracer_cache_dirs "$jar")
   # A cache already made in any of the places is used as it is.
   for dir in ${dirs[@]+"${dirs[@]}"}; do
     if [ -f "$dir/$name" ]; then

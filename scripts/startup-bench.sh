@@ -80,18 +80,20 @@ for scene in "$home"/scenes/*.xml "$home"/launcher/training/*.xml; do
   printf '%s\t%s\n' "$scene" "$work/train-$(basename "$scene" .xml).png" >>"$work/batch"
 done
 echo "startup-bench.sh: making the caches" >&2
-batch() { "$@" -jar "$jar" -p 2 --batch "$work/batch" >/dev/null 2>&1; }
-batch "$j17" "${jvm[@]}" -x 64 -XX:DumpLoadedClassList="$work/17.classes"
+trap 'echo "startup-bench.sh: failed at line $LINENO" >&2' ERR
+# batch WIDTH JAVA OPTION...: the training batch at WIDTH pixels wide.
+batch() { "${@:2}" -jar "$jar" -x "$1" -p 2 --batch "$work/batch" >/dev/null 2>&1; }
+batch 64 "$j17" "${jvm[@]}" -XX:DumpLoadedClassList="$work/17.classes"
 "$j17" "${jvm[@]}" -Xshare:dump -XX:SharedClassListFile="$work/17.classes" \
   -XX:SharedArchiveFile="$work/17.jsa" -Xlog:cds=off -cp "$jar" >/dev/null 2>&1
-batch "$j25" "${jvm[@]}" "$unsafe" -x 64 -XX:DumpLoadedClassList="$work/25.classes"
+batch 64 "$j25" "${jvm[@]}" "$unsafe" -XX:DumpLoadedClassList="$work/25.classes"
 "$j25" "${jvm[@]}" "$unsafe" -Xshare:dump -XX:SharedClassListFile="$work/25.classes" \
   -XX:SharedArchiveFile="$work/25.jsa" "${quiet[@]}" -cp "$jar" >/dev/null 2>&1
 (cd "$home/scenes" && "$j25" "${jvm[@]}" "$unsafe" -XX:AOTCacheOutput="$work/one.aot" \
   -jar "$jar" -x 48 -y 27 -a 2 -p 2 "$work/one.png" <showcase.xml >/dev/null 2>&1)
-batch "$j25" "${jvm[@]}" "$unsafe" -x 64 -XX:AOTCacheOutput="$work/64.aot"
-batch "$j25" "${jvm[@]}" "$unsafe" -x 320 -XX:AOTCacheOutput="$work/320.aot"
-batch "$j25" "${jvm[@]}" "$unsafe" -XX:+UseCompactObjectHeaders -x 320 -XX:AOTCacheOutput="$work/320c.aot"
+batch 64 "$j25" "${jvm[@]}" "$unsafe" -XX:AOTCacheOutput="$work/64.aot"
+batch 320 "$j25" "${jvm[@]}" "$unsafe" -XX:AOTCacheOutput="$work/320.aot"
+batch 320 "$j25" "${jvm[@]}" "$unsafe" -XX:+UseCompactObjectHeaders -XX:AOTCacheOutput="$work/320c.aot"
 
 names=("17 cds" "25 none" "25 cds" "25 aot-one" "25 aot-64" "25 aot" "25 aot+coh")
 setups=(
