@@ -114,12 +114,12 @@ lazy val launcher = project
   .in(file("launcher"))
   .enablePlugins(UniversalPlugin, DebianPlugin)
   .settings(
-    name                           := "tracer-launcher",
-    publish / skip                 := true,
-    packageName                    := "tracer",
-    Universal / packageName        := s"tracer-${version.value}",
-    Universal / topLevelDirectory  := Some(s"tracer-${version.value}"),
-    Universal / mappings           := {
+    name                          := "tracer-launcher",
+    publish / skip                := true,
+    packageName                   := "tracer",
+    Universal / packageName       := s"tracer-${version.value}",
+    Universal / topLevelDirectory := Some(s"tracer-${version.value}"),
+    Universal / mappings          := {
       val base = (ThisBuild / baseDirectory).value
       val dir  = baseDirectory.value
       def tree(from: File, to: String, keep: File => Boolean = _ => true) =
@@ -135,18 +135,18 @@ lazy val launcher = project
       ) ++ tree(dir / "training", "lib/training") ++ tree(base / "docs", "docs") ++
         tree(base / "scenes", "scenes", f => !f.getPath.contains(s"${java.io.File.separator}bench"))
     },
-    maintainer                     := "The tracer authors <tracer@localhost>",
-    packageSummary                 := "a Whitted ray tracer: renders XML scenes to PNG or PPM",
-    packageDescription             := "tracer renders scenes written in a small XML format " +
+    maintainer         := "The tracer authors <tracer@localhost>",
+    packageSummary     := "a Whitted ray tracer: renders XML scenes to PNG or PPM",
+    packageDescription := "tracer renders scenes written in a small XML format " +
       "(spheres, planes, triangles, OBJ meshes, textures, reflection, refraction, area lights) " +
       "to PNG or PPM pictures, one frame or a batch of frames in one process.",
-    Debian / packageArchitecture   := "all",
+    Debian / packageArchitecture       := "all",
     Debian / debianPackageDependencies := Seq(
       "default-jre-headless (>= 2:1.17) | java17-runtime-headless | java-runtime-headless (>= 17)"
     ),
     Debian / linuxPackageMappings := {
-      val usr   = "/usr/share/tracer"
-      val doc   = "/usr/share/doc/tracer"
+      val usr = "/usr/share/tracer"
+      val doc = "/usr/share/doc/tracer"
       // README.md and docs/ keep their places relative to each other, so that links still work;
       // the licence is Debian's copyright file.
       val files = (Universal / mappings).value.collect {
@@ -162,7 +162,8 @@ lazy val launcher = project
         packageMapping(manPage.value -> "/usr/share/man/man1/tracer.1.gz").withPerms("0644")
       )
     },
-    Debian / linuxPackageSymlinks += com.typesafe.sbt.packager.linux.LinuxSymlink("/usr/bin/tracer", "/usr/share/tracer/bin/tracer"),
+    Debian / linuxPackageSymlinks += com.typesafe.sbt.packager.linux
+      .LinuxSymlink("/usr/bin/tracer", "/usr/share/tracer/bin/tracer"),
     // The one maintainer script: the start-up caches that root's runs made beside the jar go
     // with the package (docs/install.md). No users, groups or services to set up.
     Debian / maintainerScripts := Map(

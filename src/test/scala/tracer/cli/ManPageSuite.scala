@@ -25,7 +25,9 @@ class ManPageSuite extends munit.FunSuite:
       assert(at > 0 && lines(at - 1) == ".TP", s"$spec missing")
       assertEquals(lines(at + 1), about)
 
-  test("the header and the notes of the usage are there, and no line starts a roff request by chance"):
+  test(
+    "the header and the notes of the usage are there, and no line starts a roff request by chance"
+  ):
     assert(page.contains("tracer: renders an XML scene"), page)
     assert(page.contains("2 usage error."), page)
     val requests = page.linesIterator.filter(l => l.startsWith(".") || l.startsWith("'"))
