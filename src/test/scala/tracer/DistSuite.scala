@@ -47,6 +47,14 @@ class DistSuite extends munit.FunSuite:
     assertEquals(run(Seq("tar", "-xzf", tarball.toString), install).status, 0)
     install.resolve(s"tracer-$version")
 
+  /** The status that dpkg records for the package tracer, if it records one. */
+  private def status(d: Path): Option[String] =
+    val e = run(Seq("dpkg-query", "-W", "-f=${Status}", "tracer"), d)
+    Option.when(e.status == 0 && e.out.nonEmpty)(e.out)
+
+  /** Where the package installs the page `page` of the repository (README.md, docs/…). */
+  private def installedDoc(page: String): String = s"/usr/share/doc/tracer/$page"
+
   /** The cache files in `dir` and below: the launcher's start-up caches, by name. */
   private def caches(dir: Path): List[String] =
     if !Files.exists(dir) then Nil
@@ -156,8 +164,8 @@ class DistSuite extends munit.FunSuite:
         "/usr/share/tracer/lib/launcher.sh",
         "/usr/share/man/man1/tracer.1.gz",
         "/usr/share/doc/tracer/copyright",
-        "/usr/share/doc/tracer/README.md",
-        "/usr/share/doc/tracer/docs/cli.md",
+        installedDoc("README.md"),
+        installedDoc("docs/cli.md"),
         "/usr/share/tracer/scenes/showcase.xml"
       )
     do assert(has(path), s"$path not in the package:\n${listing.mkString("\n")}")
@@ -175,7 +183,7 @@ class DistSuite extends munit.FunSuite:
     assume(Files.exists(deb), s"$deb is missing: run ./sbt dist")
     assume(Processes.isRoot, "installing a package needs root")
     assume(Files.isExecutable(Path.of("/usr/bin/apt-get")), "needs apt-get")
-    assume(run(Seq("dpkg", "-s", "tracer"), d).status != 0, "tracer is installed already")
+    assume(status(d).isEmpty, s"tracer is known to dpkg already: ${status(d)}")
     val expected = reference(d, 32)
     val apt      = Map("DEBIAN_FRONTEND" -> Some("noninteractive"))
     try
@@ -187,11 +195,13 @@ class DistSuite extends munit.FunSuite:
       val man  = Path.of("/usr/share/man/man1/tracer.1.gz")
       val page = String(GZIPInputStream(Files.newInputStream(man)).readAllBytes())
       assert(page.startsWith(s".TH TRACER 1"), page.take(80))
-      assert(Files.isRegularFile(Path.of("/usr/share/doc/tracer/docs/install.md")))
+      assert(Files.isRegularFile(Path.of(installedDoc("docs/install.md"))))
     finally
       val removed = run(Seq("dpkg", "-r", "tracer"), d)
       assertEquals(removed.status, 0, removed.out + removed.err)
       assert(!removed.err.contains("not empty"), removed.err)
+      // Removed whole: no configuration files or scripts kept (no "rc" state left to purge).
+      assertEquals(status(d), None)
     for path <- List(
         "/usr/bin/tracer",
         "/usr/share/tracer",
