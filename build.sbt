@@ -122,9 +122,9 @@ lazy val launcher = project
     Universal / mappings          := {
       val base = (ThisBuild / baseDirectory).value
       val dir  = baseDirectory.value
-      def tree(from: File, to: String, keep: File => Boolean = _ => true) =
-        (from ** "*").get.filter(f => f.isFile && keep(f)).flatMap { f =>
-          IO.relativize(from, f).map(path => f -> s"$to/$path")
+      def tree(from: File, to: String, keep: String => Boolean = _ => true) =
+        (from ** "*").get.filter(_.isFile).flatMap { f =>
+          IO.relativize(from, f).filter(keep).map(path => f -> s"$to/$path")
         }
       Seq(
         (root / assembly).value -> "lib/tracer.jar",
@@ -133,7 +133,7 @@ lazy val launcher = project
         base / "README.md"      -> "README.md",
         base / "LICENSE"        -> "LICENSE"
       ) ++ tree(dir / "training", "lib/training") ++ tree(base / "docs", "docs") ++
-        tree(base / "scenes", "scenes", f => !f.getPath.contains(s"${java.io.File.separator}bench"))
+        tree(base / "scenes", "scenes", path => !path.startsWith("bench/")) // generated
     },
     maintainer         := "The tracer authors <tracer@localhost>",
     packageSummary     := "a Whitted ray tracer: renders XML scenes to PNG or PPM",
