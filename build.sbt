@@ -8,6 +8,15 @@ ThisBuild / scalacOptions ++= Seq(
   "-feature",
   "-unchecked",
   "-Wunused:all",
+  // The compiler's own analysis (docs/analysis.md): objects read before they are initialised,
+  // values discarded where Unit is expected, and statements whose value is dropped.
+  "-Wsafe-init",
+  "-Wvalue-discard",
+  "-Wnonunit-statement",
+  // Until their owners fix them (docs/analysis.md): the only such findings left, in files being
+  // rewritten on other branches, are reported as information. Remove these lines then.
+  "-Wconf:src=src/main/scala/tracer/(io/OutputFile|render/Bvh|render/Renderer)\\.scala&id=E175:i",
+  "-Wconf:src=src/main/scala/tracer/(io/OutputFile|render/Bvh|render/Renderer)\\.scala&id=E176:i",
   "-Werror"
 )
 
@@ -16,13 +25,16 @@ lazy val root = project
   .settings(
     name := "tracer",
     libraryDependencies ++= Seq(
-      "org.scala-lang.modules" %% "scala-xml"        % "2.4.0",
       "com.github.scopt"       %% "scopt"            % "4.1.0",
+      "org.scala-lang.modules" %% "scala-xml"        % "2.4.0"  % Test,
       "org.scalameta"          %% "munit"            % "1.2.1"  % Test,
       "org.scalameta"          %% "munit-scalacheck" % "1.2.0"  % Test,
       "org.scalacheck"         %% "scalacheck"       % "1.19.0" % Test
     ),
     Compile / mainClass := Some("tracer.cli.Main"),
+    // munit registers each test from the suite's constructor, which -Wsafe-init cannot follow
+    // (it flags test bodies as reading a half-built suite); the tests keep the other checks.
+    Test / scalacOptions -= "-Wsafe-init",
     // tracer.BuildInfo: the build's version, for `tracer --version`.
     Compile / sourceGenerators += Def.task {
       val file = (Compile / sourceManaged).value / "tracer" / "BuildInfo.scala"
@@ -52,20 +64,55 @@ lazy val root = project
     Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
   )
 
+// tracer.demo: the project's own scenes and tools, outside the renderer's jar — the animation,
+// the benchmark scenes, the model and texture generators and the POV-Ray export. Its tests use
+// the renderer's test kit.
+lazy val demo = project
+  .in(file("demo"))
+  .dependsOn(root % "compile->compile;test->test")
+  .settings(
+    name           := "tracer-demo",
+    publish / skip := true,
+    // scripts/demo.sh (and so bench.sh) puts this jar beside tracer.jar on a classpath.
+    Compile / packageBin / artifactPath := baseDirectory.value / "target" / "tracer-demo.jar",
+    Test / scalacOptions -= "-Wsafe-init", // as in the root module
+    Test / fork          := true,
+    Test / baseDirectory := (ThisBuild / baseDirectory).value,
+    Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
+    Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
+    console / initialCommands := (root / console / initialCommands).value + ", tracer.demo.*",
+    Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
+  )
+
 lazy val bench = project
   .in(file("bench"))
-  .dependsOn(root)
+  .dependsOn(root, demo)
   .enablePlugins(JmhPlugin)
   .settings(name := "tracer-bench", publish / skip := true)
 
-// The one command that checks everything: formatting, compilation, Scaladoc, then every test.
+// `./sbt lint`: the code analysis — semgrep with the project's rules (lint/semgrep.yml) over
+// every Scala source, and docs/analysis.md checked against the suppressions in the tree. The
+// script installs its pinned semgrep on first use; a finding fails the build, named by file and
+// line. See docs/analysis.md.
+lazy val lint = taskKey[Unit]("Runs the code analysis (scripts/lint.sh)")
+
+lint := {
+  val base   = (ThisBuild / baseDirectory).value
+  val status = scala.sys.process.Process(Seq("bash", "scripts/lint.sh"), base).!
+  if (status != 0) sys.error(s"lint: scripts/lint.sh found problems (status $status), see above")
+}
+
+// The one command that checks everything: formatting, the code analysis, compilation, Scaladoc,
+// then every test (the renderer's, then the demo's).
 addCommandAlias(
   "check",
-  "; scalafmtCheckAll ; scalafmtSbtCheck ; Test/compile ; bench/compile ; doc ; test"
+  "; scalafmtCheckAll ; demo/scalafmtCheckAll ; scalafmtSbtCheck ; lint" +
+    " ; Test/compile ; demo/Test/compile ; bench/compile ; doc ; demo/doc ; test ; demo/test"
 )
 
 // `./sbt movie` (the course's `ant movie`): builds the tracer, writes the frames of the project's
-// animation (tracer.demo.Animation) and renders them with scripts/movie.sh into target/movie/.
+// animation (tracer.demo.Animation, in the demo module) and renders them with scripts/movie.sh
+// into target/movie/.
 lazy val movie = taskKey[Seq[File]]("Renders the project's movie into target/movie/")
 
 movie := {
@@ -73,8 +120,8 @@ movie := {
   val base   = (ThisBuild / baseDirectory).value
   val dir    = base / "target" / "movie"
   val log    = streams.value.log
-  val frames = (root / Compile / fullClasspath).value.files
-  (root / Compile / runner).value.run("tracer.demo.Animation", frames, Seq(dir.toString), log).get
+  val frames = (demo / Compile / fullClasspath).value.files
+  (demo / Compile / runner).value.run("tracer.demo.Animation", frames, Seq(dir.toString), log).get
   val options = sys.env.getOrElse("TRACER_OPTS", "-x 640 -a 2 -g srgb")
   log.info(s"rendering the movie's frames with TRACER_OPTS='$options' (built $jar)")
   Seq("tracer.mp4", "tracer.mpg").map { name =>

@@ -32,10 +32,12 @@ if $povray && ! command -v povray >/dev/null; then echo "bench.sh: povray is not
 
 tracer="$home/tracer"
 "$tracer" --help >/dev/null # builds the jar if needed, outside the timings
+# The demo module (the benchmark scenes, the animation, the POV-Ray export) runs from its own jar.
+demo() { "$home/scripts/demo.sh" "$@"; }
 dir="$home/scenes/bench"
 if [ ! -f "$dir/mesh-80000.obj" ]; then
   echo "bench.sh: generating the benchmark scenes in $dir" >&2
-  java -cp "$home/target/scala-3.8.3/tracer.jar" tracer.demo.BenchScenes "$dir"
+  demo tracer.demo.BenchScenes "$dir"
 fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -58,9 +60,9 @@ best_of() {
 
 if $movie; then
   frames="$out/frames"
-  java -cp "$home/target/scala-3.8.3/tracer.jar" tracer.demo.Animation "$frames" >/dev/null
+  demo tracer.demo.Animation "$frames" >/dev/null
   grep -v '^#' "$frames/frames.txt" | head -48 > "$frames/frames48.txt"
-  java -cp "$home/target/scala-3.8.3/tracer.jar" tracer.demo.PovRay --beside $(sed "s|^|$frames/|" "$frames/frames48.txt")
+  demo tracer.demo.PovRay --beside $(sed "s|^|$frames/|" "$frames/frames48.txt")
   # POV-Ray's animation loop includes the twin of frame N as its frame N.
   printf '#include concat("frame-", str(frame_number, -4, 0), ".pov")\n' > "$frames/movie.pov"
   movie_tracer() {

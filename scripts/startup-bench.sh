@@ -47,7 +47,7 @@ for j in "$j17" "$j25"; do [ -x "$j" ] || { echo "startup-bench.sh: no $j" >&2; 
 dir="$home/scenes/bench"
 if [ ! -f "$dir/mesh-20000.obj" ]; then
   echo "startup-bench.sh: generating the benchmark scenes in $dir" >&2
-  java -cp "$home/target/scala-3.8.3/tracer.jar" tracer.demo.BenchScenes "$dir"
+  "$home/scripts/demo.sh" tracer.demo.BenchScenes "$dir"
 fi
 if [ ! -f "$dir/triangles-20000.xml" ]; then
   # The OBJ terrain's faces as <triangle> elements, in mesh-20000.xml's frame and surface.

@@ -39,7 +39,7 @@ class FarmSuite extends MovieWorkspace:
   workspace.test(
     "MOVIE_JOBS=2 renders the same frames as a serial run, and totals them the same way"
   ): d =>
-    writeFrames(d, shades.map(scene))
+    writeFrames(d, shades.map(scene)): Unit
     val serial   = movieRun(d, "serial.mp4", Map.empty)
     val parallel = movieRun(d, "parallel.mp4", Map("MOVIE_JOBS" -> "2"))
     assertEquals((serial.status, parallel.status), (0, 0), parallel.err)
@@ -51,7 +51,7 @@ class FarmSuite extends MovieWorkspace:
   workspace.test(
     "MOVIE_JOBS=2: a failing frame is named and stops the movie; a rerun renders only what is missing"
   ): d =>
-    writeFrames(d, shades.take(2).map(scene) ++ List("<scene>", scene(shades(3))))
+    writeFrames(d, shades.take(2).map(scene) ++ List("<scene>", scene(shades(3)))): Unit
     val failed = movieRun(d, "farm.mp4", Map("MOVIE_JOBS" -> "2"))
     assertEquals(failed.status, 1)
     assert(failed.err.contains("frame 3 failed") && failed.err.contains("f2.xml"), failed.err)
@@ -68,7 +68,7 @@ class FarmSuite extends MovieWorkspace:
 
   workspace.test("MOVIE_JOBS without GNU parallel is a clear message before anything is rendered"):
     d =>
-      writeFrames(d, shades.take(1).map(scene))
+      writeFrames(d, shades.take(1).map(scene)): Unit
       val bin =
         pathWith(d.resolve("bin"), "bash", "env", "dirname", "basename", "mkdir", "cat", "sed")
       val e = run(
@@ -91,7 +91,7 @@ class FarmSuite extends MovieWorkspace:
     // sshd_config cannot quote paths, so its files live where the path has no spaces.
     val sshd = Sshd.start(Files.createTempDirectory("sshd"))
     try
-      writeFrames(d, shades.map(scene))
+      writeFrames(d, shades.map(scene)): Unit
       val serial = movieRun(d, "serial.mp4", Map.empty)
       assertEquals(serial.status, 0, serial.err)
       val before = calls(d)

@@ -12,7 +12,7 @@ class ScriptsSuite extends MovieWorkspace:
   workspace.test(
     "a movie of tiny frames: total = the sum of the frames' times, every frame encoded, odd sizes padded"
   ): d =>
-    writeFrames(d, colours.map(scene))
+    writeFrames(d, colours.map(scene)): Unit
     val output = d.resolve("my movies/tiny.mp4")
     // Run from an unrelated directory, with a relative FRAMES path.
     val e = run(

@@ -198,7 +198,7 @@ class StillSuite extends MovieWorkspace:
     finally sshd.stop()
 
   workspace.test("movie.sh takes FARM_JOBS too"): d =>
-    writeFrames(d, colours.map(this.scene))
+    writeFrames(d, colours.map(this.scene)): Unit
     val e = run(
       List(
         movie.toString,

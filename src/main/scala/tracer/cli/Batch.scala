@@ -1,5 +1,7 @@
 package tracer.cli
 
+import tracer.Eithers
+
 /** One frame of a batch: the scene file to read and the picture to write, as the list names them.
   *
   * @param line   the frame's line in the list, for messages
@@ -19,13 +21,16 @@ object Batch:
   def parse(text: String): Either[String, List[BatchFrame]] =
     val lines  = text.linesIterator.zipWithIndex.map((l, i) => (l.stripSuffix("\r"), i + 1)).toList
     val frames = lines.filterNot((l, _) => l.isBlank || l.startsWith("#"))
-    frames.foldRight[Either[String, List[BatchFrame]]](Right(Nil)) { case ((text, n), rest) =>
+    Eithers.traverse(frames) { (text, n) =>
       text.split("\t", -1) match
         case Array(scene, output) if scene.nonEmpty && output.nonEmpty =>
-          rest.map(BatchFrame(n, scene, output) :: _)
+          Right(BatchFrame(n, scene, output))
         case Array(scene, output, rows) if scene.nonEmpty && output.nonEmpty =>
-          for band <- Options.band(rows).left.map(why => s"line $n: $why"); frames <- rest
-          yield BatchFrame(n, scene, output, Some(band)) :: frames
+          Options
+            .band(rows)
+            .left
+            .map(why => s"line $n: $why")
+            .map(band => BatchFrame(n, scene, output, Some(band)))
         case _ => Left(s"line $n: expected SCENE<TAB>OUTPUT[<TAB>a:b], got '${text.take(60)}'")
     } match
       case Right(Nil) => Left("the list names no frames")

@@ -84,14 +84,14 @@ object Options:
       (result, errors) match
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
-        case (Some(options), Nil) if options.batch.isDefined =>
+        case (Some(options @ Options(batch = Some(list))), Nil) =>
           if options.output.nonEmpty then
             Command.UsageError(
               s"--batch takes no OUTPUT: the list names them (got ${options.output})"
             )
           else if options.input.isDefined then
             Command.UsageError("--batch takes no -i: the list names the scenes")
-          else Command.Batch(options, options.batch.get)
+          else Command.Batch(options, list)
         case (Some(options), Nil) if options.output.isEmpty && !options.size =>
           Command.UsageError("Missing argument OUTPUT")
         case (Some(options), Nil) if options.size           => Command.Size(options)

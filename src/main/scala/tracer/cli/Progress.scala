@@ -12,10 +12,10 @@ final class Progress private (out: PrintStream, totalRows: Int, timer: Scheduled
   private val done = AtomicInteger(0)
 
   /** Counts one finished row; called from the render threads. */
-  def rowDone(): Unit = done.incrementAndGet()
+  def rowDone(): Unit = done.incrementAndGet(): Unit
 
   private def draw(): Unit =
-    val rows = done.get
+    val rows = done.get()
     out.print(s"\rtracer: rendering ${100L * rows / totalRows}% ($rows of $totalRows rows)")
     out.flush()
 

@@ -39,6 +39,7 @@ object Resolution:
       case (Some(w), Some(h), None, Some(y))    => Resolution(w, h, pixels(w * y / h), y)
       case (Some(w), None, Some(x), Some(y))    => Resolution(w, w * y / x, x, y)
       case (None, Some(h), Some(x), Some(y))    => Resolution(h * x / y, h, x, y)
+      // Why: unreachable — `fill` makes three of the four known, and a match cannot say so.
       case _ => throw IllegalStateException("three of W, H, X, Y are always known here")
 
   /** `value`, or `fallback` when it is absent and fewer than three values are `known`. */

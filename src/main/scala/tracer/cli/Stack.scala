@@ -1,6 +1,7 @@
 package tracer.cli
 
 import java.nio.file.Path
+import tracer.Eithers
 import tracer.image.Bitmap
 import tracer.io.{Images, OutputFile, TextureFiles}
 
@@ -14,14 +15,10 @@ private[cli] object Stack:
     val target = cwd.resolve(output)
     for
       _      <- OutputFile.checkWritable(target)
-      images <- bands.foldLeft[Either[String, List[Bitmap]]](Right(Nil)) { (done, name) =>
-        done.flatMap(list =>
-          TextureFiles.read(cwd.resolve(name)) match
-            case Right(image) => Right(image :: list)
-            case Left(why)    => Left(s"--stack: cannot read $name: $why")
-        )
-      }
-      joined <- images.reverse match
+      images <- Eithers.traverse(bands)(name =>
+        TextureFiles.read(cwd.resolve(name)).left.map(why => s"--stack: cannot read $name: $why")
+      )
+      joined <- images match
         case first :: rest
             if rest.forall(b => b.width == first.width && b.maxval == first.maxval) =>
           Right(Bitmap.stack(first :: rest))

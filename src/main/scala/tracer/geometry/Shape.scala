@@ -1,6 +1,6 @@
 package tracer.geometry
 
-import tracer.math.Vec3
+import tracer.math.{Placement, Transform, Vec3}
 
 /** A geometric primitive: the closed set of shapes a scene can hold.
   *
@@ -130,6 +130,105 @@ object Triangle:
   def isProper(t0: Vec3, t1: Vec3, t2: Vec3): Boolean =
     (t1 - t0).cross(t2 - t0).normalised.isDefined
 
+/** A box with faces parallel to the axes, between two opposite corners (scene format v3; POV-Ray's
+  * `box`).
+  *
+  * @param corner1 one corner
+  * @param corner2 the opposite corner, differing from `corner1` in every coordinate
+  */
+final case class Box(corner1: Vec3, corner2: Vec3) extends Shape:
+  require(
+    corner1.x != corner2.x && corner1.y != corner2.y && corner1.z != corner2.z,
+    s"a box's corners must differ in every coordinate, got $corner1 and $corner2"
+  )
+
+  /** The box's extent: its smallest and largest coordinates. */
+  val extent: Bounds = Bounds.around(Seq(corner1, corner2))
+
+/** A cone's frustum from a base disc to a cap disc (scene format v3; POV-Ray's `cone`), or with
+  * both radii equal a cylinder. A radius may be 0 (a point), but not both.
+  *
+  * @param base       the centre of the base disc
+  * @param baseRadius the base disc's radius, ≥ 0
+  * @param cap        the centre of the cap disc, not `base`
+  * @param capRadius  the cap disc's radius, ≥ 0
+  * @param open       true for the side alone, without the discs: then the shape has no inside
+  */
+final case class Cone(
+    base: Vec3,
+    baseRadius: Double,
+    cap: Vec3,
+    capRadius: Double,
+    open: Boolean = false
+) extends Shape:
+  require(
+    baseRadius >= 0 && capRadius >= 0 && baseRadius + capRadius > 0,
+    s"a cone's radii must be at least 0 and not both 0, got $baseRadius and $capRadius"
+  )
+
+  /** The distance from base to cap. */
+  val height: Double = base.distance(cap)
+  require(height > 0, s"a cone's base and cap must differ, both are $base")
+
+  /** The unit axis from base to cap. */
+  val axis: Vec3 = (cap - base) / height
+
+  /** How fast the radius grows along the axis: (capRadius − baseRadius) / height. */
+  val slope: Double = (capRadius - baseRadius) / height
+
+/** Constructors of cylinders, which are [[Cone]]s with equal radii. */
+object Cylinder:
+  /** The cylinder of `radius` (> 0) from `base` to `cap`; `open` leaves out its end discs. */
+  def apply(base: Vec3, cap: Vec3, radius: Double, open: Boolean = false): Cone =
+    require(radius > 0, s"a cylinder's radius must be greater than 0, got $radius")
+    Cone(base, radius, cap, radius, open)
+
+/** A torus around the y axis, centred on the origin (scene format v3; POV-Ray's `torus`).
+  *
+  * @param major the distance from the origin to the centre of the tube, > 0
+  * @param minor the tube's radius, > 0
+  */
+final case class Torus(major: Double, minor: Double) extends Shape:
+  require(major > 0 && minor > 0, s"a torus's radii must be greater than 0, got $major and $minor")
+
+/** A shape scaled, rotated and moved (docs/scene-format.md, Placement). Rays are taken into the
+  * shape's own space, met there, and their distances and normals brought back (pbrt's
+  * transformed primitives).
+  *
+  * @param shape     the shape in its own space
+  * @param placement from the shape's own space to the space around it
+  */
+final case class Placed(shape: Shape, placement: Placement) extends Shape:
+  /** The placement's map. */
+  def transform: Transform = placement.transform
+
+/** How a [[Csg]] combines its children. */
+enum CsgOperation:
+  /** Every child: all their surfaces, inner ones included (POV-Ray's `union`, not `merge`). */
+  case Union
+
+  /** The points inside every child. */
+  case Intersection
+
+  /** The points inside the first child and outside every later one. */
+  case Difference
+
+/** Constructive solid geometry: children combined by an operation (docs/rendering.md,
+  * Constructive solid geometry). The primitives in the tree are its leaves, numbered depth-first
+  * from 0; a hit says which leaf it is on, so that each can have its own surface.
+  *
+  * @param operation how the children combine
+  * @param children  at least one; triangles (which have no inside) only in a union
+  */
+final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends Shape:
+  require(children.nonEmpty, "a CSG combination needs at least one child")
+
+  /** The number of leaves below each child, in order. */
+  val leafCounts: Vector[Int] = children.map(Shape.leafCount)
+
+  /** The number of the first leaf of each child. */
+  val firstLeaves: Vector[Int] = leafCounts.scanLeft(0)(_ + _).init
+
 /** The total functions on shapes: intersection distance, hit details and texture coordinates. */
 object Shape:
 
@@ -139,16 +238,24 @@ object Shape:
     * This is the hot test of the tracer: it allocates nothing the JIT cannot remove.
     */
   def distance(shape: Shape, ray: Ray): Double = shape match
-    case s: Sphere   => sphereDistance(s, ray)
-    case p: Plane    => planeDistance(p.normal, p.distance, ray)
-    case t: Triangle => triangleDistance(t, ray)
+    case s: Sphere                                   => sphereDistance(s, ray)
+    case p: Plane                                    => planeDistance(p.normal, p.distance, ray)
+    case t: Triangle                                 => triangleDistance(t, ray)
+    case c: Csg if c.operation == CsgOperation.Union =>
+      c.children.foldLeft(Double.PositiveInfinity)((best, child) => best min distance(child, ray))
+    case p: Placed =>
+      val (local, stretch) = ownSpace(p, ray)
+      distance(p.shape, local) / stretch
+    case other: (Box | Cone | Torus | Csg) => crossings(other, ray).headOption.fold(Miss)(_.t)
 
   /** The full intersection of `ray` with `shape`, if it has one. */
   def intersect(shape: Shape, ray: Ray): Option[Hit] =
     val t = distance(shape, ray)
     Option.when(t < Double.PositiveInfinity)(hitAt(shape, ray, t))
 
-  /** The hit at distance `t` (from [[distance]]) along `ray`: the point and the normal facing the ray. */
+  /** The hit at distance `t` (from [[distance]]) along `ray`: the point and the normal facing the
+    * ray, and for a combination the leaf it is on.
+    */
   def hitAt(shape: Shape, ray: Ray, t: Double): Hit =
     val point = ray.at(t)
     shape match
@@ -156,42 +263,142 @@ object Shape:
         // Equation 23: the outward normal, flipped for a ray that starts inside.
         val outward = (point - s.centre) * (1 / s.radius)
         Hit(t, point, if startsInside(s, ray) then -outward else outward)
-      case p: Plane     => Hit(t, point, facing(p.normal, ray))
-      case tr: Triangle => Hit(t, point, facing(tr.normal, ray))
+      case p: Plane                                   => Hit(t, point, facing(p.normal, ray))
+      case tr: Triangle                               => Hit(t, point, facing(tr.normal, ray))
+      case other: (Box | Cone | Torus | Placed | Csg) =>
+        // The general path: the nearest crossing again, for its normal and leaf.
+        crossings(other, ray).headOption match
+          case Some(c) => Hit(c.t, ray.at(c.t), facing(c.normal, ray), c.leaf)
+          case None    => Hit(t, point, facing(Vec3.UnitY, ray))
+
+  /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
+    * constructive solid geometry combines. `ray.direction` must be a unit vector.
+    */
+  def crossings(shape: Shape, ray: Ray): List[Crossing] = shape match
+    case s: Sphere =>
+      val oc   = s.centre - ray.origin
+      val tca  = oc.dot(ray.direction)
+      val t2hc = s.radiusSquared - oc.dot(oc) + tca * tca
+      if t2hc < 0 then Nil
+      else
+        val half = Math.sqrt(t2hc)
+        List(tca - half, tca + half)
+          .filter(_ > 0)
+          .map(t => Crossing(t, (ray.at(t) - s.centre) * (1 / s.radius), 0))
+    case p: Plane =>
+      val t = planeDistance(p.normal, p.distance, ray)
+      if t < Miss then List(Crossing(t, p.normal, 0)) else Nil
+    case tr: Triangle =>
+      val t = triangleDistance(tr, ray)
+      if t < Miss then List(Crossing(t, tr.normal, 0)) else Nil
+    case b: Box    => Solids.boxCrossings(b, ray)
+    case c: Cone   => Solids.coneCrossings(c, ray)
+    case t: Torus  => Solids.torusCrossings(t, ray)
+    case p: Placed =>
+      val (local, stretch) = ownSpace(p, ray)
+      crossings(p.shape, local).map(c =>
+        Crossing(c.t / stretch, p.transform.normal(c.normal).normalisedOr(c.normal), c.leaf)
+      )
+    case c: Csg => Combination.crossings(c, ray)
+
+  /** True when `point` is inside the solid `shape` (POV-Ray's inside tests, their tolerances
+    * included): for a plane, the side its normal points away from; triangles have no inside.
+    */
+  def inside(shape: Shape, point: Vec3): Boolean = shape match
+    case s: Sphere   => (point - s.centre).lengthSquared < s.radiusSquared
+    case p: Plane    => point.dot(p.normal) < p.distance + Solids.InsideTolerance
+    case _: Triangle => false
+    case b: Box      => Solids.insideBox(b, point)
+    case c: Cone     => Solids.insideCone(c, point)
+    case t: Torus    => Solids.insideTorus(t, point)
+    case p: Placed   => inside(p.shape, p.transform.pointBack(point))
+    case c: Csg      => Combination.inside(c, point)
+
+  /** The number of primitives in `shape`: 1, or for a combination the sum over its children. */
+  def leafCount(shape: Shape): Int = shape match
+    case c: Csg                                              => c.leafCounts.sum
+    case p: Placed                                           => leafCount(p.shape)
+    case _: (Sphere | Plane | Triangle | Box | Cone | Torus) => 1
+
+  /** The smallest axis-aligned box around `shape`, or `None` when it is unbounded (a plane, or a
+    * combination that keeps all of one).
+    */
+  def bounds(shape: Shape): Option[Bounds] = shape match
+    case s: Sphere =>
+      val r = Vec3(s.radius, s.radius, s.radius)
+      Some(Bounds(s.centre - r, s.centre + r))
+    case _: Plane    => None
+    case t: Triangle => Some(Bounds.around(Seq(t.t0, t.t1, t.t2)))
+    case b: Box      => Some(b.extent)
+    case c: Cone => Some(disc(c.base, c.baseRadius, c.axis).union(disc(c.cap, c.capRadius, c.axis)))
+    case t: Torus =>
+      val (r, h) = (t.major + t.minor, t.minor)
+      Some(Bounds(Vec3(-r, -h, -r), Vec3(r, h, r)))
+    case p: Placed => bounds(p.shape).map(b => Bounds.around(b.corners.map(p.transform.point)))
+    case c: Csg    =>
+      val inner = c.children.map(bounds)
+      c.operation match
+        case CsgOperation.Union =>
+          if inner.forall(_.isDefined) then Some(inner.flatten.reduce(_.union(_))) else None
+        case CsgOperation.Intersection => inner.flatten.reduceOption(_.intersection(_))
+        case CsgOperation.Difference   => inner.head
+
+  /** The box around a disc of `radius` centred at `centre` at right angles to unit `axis`. */
+  private def disc(centre: Vec3, radius: Double, axis: Vec3): Bounds =
+    def reach(a: Double) = radius * Math.sqrt(Math.max(0.0, 1 - a * a))
+    val r                = Vec3(reach(axis.x), reach(axis.y), reach(axis.z))
+    Bounds(centre - r, centre + r)
+
+  /** `ray` taken into `p`'s own space with a unit direction, and the factor by which its
+    * distances are longer there than in the world (a distance t there is t / factor here).
+    */
+  private def ownSpace(p: Placed, ray: Ray): (Ray, Double) =
+    val direction = p.transform.directionBack(ray.direction)
+    val stretch   = direction.length
+    (Ray(p.transform.pointBack(ray.origin), direction / stretch), stretch)
 
   /** The normal that shades the hit `hit` of `ray` on `shape`, facing the side the ray came from:
     * the geometric normal, except on a smooth triangle, where it is the corners' normals
     * interpolated with the hit's barycentric weights and normalised (POV-Ray's `smooth_triangle`).
     */
   def shadingNormal(shape: Shape, hit: Hit, ray: Ray): Vec3 = shape match
-    case tr: Triangle if tr.cornerNormals.isDefined =>
-      val (n0, n1, n2) = tr.cornerNormals.get
-      val (u, v)       = triangleCoordinates(tr, hit.point - tr.t0)
-      val blended      = n0 * (1 - u - v) + n1 * u + n2 * v
-      facing(blended.normalisedOr(hit.normal), ray)
-    case _ => hit.normal
+    case tr: Triangle =>
+      tr.cornerNormals match
+        case Some((n0, n1, n2)) =>
+          val (u, v)  = triangleCoordinates(tr, hit.point - tr.t0)
+          val blended = n0 * (1 - u - v) + n1 * u + n2 * v
+          facing(blended.normalisedOr(hit.normal), ray)
+        case None => hit.normal
+    case _: (Sphere | Plane | Box | Cone | Torus | Placed | Csg) => hit.normal
 
-  /** The texture coordinates of `point` on `shape` (rendering.md, Textures).
+  /** The texture coordinates of `point` on `shape` (rendering.md, Textures); `leaf` says which
+    * primitive of a combination the point is on.
     *
     * Sphere: equations 35–38 with the outward normal. Triangle: the (u, v) of equations 33–34, or
     * for a mesh triangle its corners' coordinates interpolated at (u, v) and wrapped into [0, 1).
-    * Plane: (0, 0), as planes take no texture.
+    * A placed shape: those of the point taken back into its own space. Shapes that take no
+    * texture (planes and the version 3 solids): (0, 0).
     */
-  def surfaceCoordinates(shape: Shape, point: Vec3): SurfaceCoordinates = shape match
-    case s: Sphere    => sphereCoordinates(s, point)
-    case tr: Triangle =>
-      val (u, v) = triangleCoordinates(tr, point - tr.t0)
-      tr.textureCorners match
-        case None               => SurfaceCoordinates(u, v)
-        case Some((c0, c1, c2)) =>
-          // scene-format.md, mesh: interpolate the corners' coordinates, wrap each into [0, 1).
-          def wrap(x: Double) = x - Math.floor(x)
-          val w               = 1 - u - v
-          SurfaceCoordinates(
-            wrap(w * c0.u + u * c1.u + v * c2.u),
-            wrap(w * c0.v + u * c1.v + v * c2.v)
-          )
-    case _: Plane => SurfaceCoordinates(0, 0)
+  def surfaceCoordinates(shape: Shape, point: Vec3, leaf: Int = 0): SurfaceCoordinates =
+    shape match
+      case s: Sphere    => sphereCoordinates(s, point)
+      case tr: Triangle =>
+        val (u, v) = triangleCoordinates(tr, point - tr.t0)
+        tr.textureCorners match
+          case None               => SurfaceCoordinates(u, v)
+          case Some((c0, c1, c2)) =>
+            // scene-format.md, mesh: interpolate the corners' coordinates, wrap each into [0, 1).
+            def wrap(x: Double) = x - Math.floor(x)
+            val w               = 1 - u - v
+            SurfaceCoordinates(
+              wrap(w * c0.u + u * c1.u + v * c2.u),
+              wrap(w * c0.v + u * c1.v + v * c2.v)
+            )
+      case p: Placed => surfaceCoordinates(p.shape, p.transform.pointBack(point), leaf)
+      case c: Csg    =>
+        val i = c.firstLeaves.lastIndexWhere(_ <= leaf)
+        surfaceCoordinates(c.children(i), point, leaf - c.firstLeaves(i))
+      case _: (Plane | Box | Cone | Torus) => SurfaceCoordinates(0, 0)
 
   /** Equations 17–21: the nearer root for a ray from outside, the farther one from inside. */
   private def sphereDistance(s: Sphere, ray: Ray): Double =
@@ -254,5 +461,8 @@ object Shape:
     if normal.dot(ray.direction) < 0 then normal else -normal
 
   private inline def positive(t: Double): Double = if t > 0 then t else Double.PositiveInfinity
+
+  /** The distance of a miss. */
+  private inline val Miss = Double.PositiveInfinity
 
   private inline def clamp(x: Double): Double = Math.max(-1.0, Math.min(1.0, x))

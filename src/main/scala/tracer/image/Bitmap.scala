@@ -60,6 +60,7 @@ final class Bitmap private (
 
   private def offset(x: Int, y: Int): Int =
     if !contains(x, y) then
+      // Why: a pixel outside the bitmap is a caller's bug, as for an array index.
       throw IndexOutOfBoundsException(s"pixel ($x, $y) is outside a $width×$height bitmap")
     3 * (y * width + x)
 
@@ -116,16 +117,17 @@ object Bitmap:
     val height = bands.iterator.map(_.height.toLong).sum
     require(height <= Int.MaxValue, "stacked image too tall")
     val samples = allocate(first.width, height.toInt, first.maxval)
-    bands.foldLeft(0) { (at, band) =>
-      System.arraycopy(band.samples, 0, samples, at, band.samples.length)
-      at + band.samples.length
-    }
+    val starts  = bands.scanLeft(0)(_ + _.samples.length)
+    bands
+      .lazyZip(starts)
+      .foreach((band, at) => System.arraycopy(band.samples, 0, samples, at, band.samples.length))
     new Bitmap(first.width, height.toInt, first.maxval, samples)
 
   /** The raw samples, for the codecs in this package; callers must not change them. */
   private[image] def samplesOf(bitmap: Bitmap): Array[Char] = bitmap.samples
 
   private def allocate(width: Int, height: Int, maxval: Int): Array[Char] =
+    // Why: every caller has checked the size (`checkSize`); a bad one is a bug, as with require.
     checkSize(width, height).fold(msg => throw IllegalArgumentException(msg), identity)
     require(maxval >= 1 && maxval <= 65535, s"maxval must be 1..65535, got $maxval")
     new Array[Char](3 * width * height)

@@ -22,11 +22,12 @@ private[image] object PngWriter:
       d.writeInt(w); d.writeInt(h); d.writeByte(8); d.writeByte(2); d.writeByte(0); d.writeByte(0);
       d.writeByte(0)
     }
-    val data      = ByteArrayOutputStream()
-    val deflater  = Deflater(6)
-    val zip       = DeflaterOutputStream(data, deflater, 1 << 16)
-    val stride    = 3 * w
-    val samples   = Bitmap.samplesOf(bitmap)
+    val data     = ByteArrayOutputStream()
+    val deflater = Deflater(6)
+    val zip      = DeflaterOutputStream(data, deflater, 1 << 16)
+    val stride   = 3 * w
+    val samples  = Bitmap.samplesOf(bitmap)
+    // Perf: two row buffers, swapped after each row rather than allocated per row.
     var previous  = new Array[Byte](stride)
     var current   = new Array[Byte](stride)
     val candidate = new Array[Byte](stride)
@@ -38,7 +39,8 @@ private[image] object PngWriter:
       while i < stride do
         current(i) = to8Bit(samples(y * stride + i), bitmap.maxval).toByte
         i += 1
-      // Choose the filter with the smallest sum of absolute differences (the usual heuristic).
+      // Perf: choose the filter with the smallest sum of absolute differences (the usual
+      // heuristic) in two locals, copying the best row once, not a row per candidate.
       var bestFilter = 0
       var bestScore  = Long.MaxValue
       for filter <- 0 to 4 do
@@ -56,15 +58,16 @@ private[image] object PngWriter:
     chunk(out, "IEND")(_ => ())
     out.flush()
 
-  /** Filters a row into `into` with PNG filter `filter` (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth)
+  /** Filters a row into `filtered` with PNG filter `filter` (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth)
     * and returns the sum of the filtered bytes taken as signed values' magnitudes.
     */
   private def applyFilter(
       filter: Int,
       row: Array[Byte],
       above: Array[Byte],
-      into: Array[Byte]
+      filtered: Array[Byte]
   ): Long =
+    // Perf: one pass over the row's bytes, summing as it filters (called five times a row).
     var sum = 0L
     var i   = 0
     while i < row.length do
@@ -79,7 +82,7 @@ private[image] object PngWriter:
         case 3 => (a + b) / 2
         case _ => paeth(a, b, c)
       val f = (x - predicted).toByte
-      into(i) = f
+      filtered(i) = f
       sum += Math.abs(f.toInt)
       i += 1
     sum

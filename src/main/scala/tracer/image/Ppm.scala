@@ -2,6 +2,7 @@ package tracer.image
 
 import java.io.{BufferedOutputStream, ByteArrayOutputStream, OutputStream}
 import java.nio.charset.StandardCharsets.US_ASCII
+import scala.util.control.NoStackTrace
 
 /** The two PPM encodings: P3 (ASCII samples) and P6 (binary samples). */
 enum PpmFormat:
@@ -63,7 +64,7 @@ object Ppm:
 
 /** A one-shot PPM decoder over the bytes of a file; its cursor never leaves this class. */
 private final class PpmReader(bytes: Array[Byte]):
-  private var pos = 0
+  private var pos = 0 // Why: the decoder's cursor; one parse per reader, and it never escapes.
 
   /** The decoded image, or what was expected where. */
   def read(): Either[String, Bitmap] =
@@ -125,6 +126,7 @@ private final class PpmReader(bytes: Array[Byte]):
       fail(
         s"expected $count samples after the header, but the file is too short to hold them (truncated file)"
       )
+    // Perf: one pass over the samples into a flat array (a 4K ASCII picture has 25 million).
     val samples = new Array[Int](count)
     var i       = 0
     while i < count do
@@ -143,6 +145,7 @@ private final class PpmReader(bytes: Array[Byte]):
       i += 1
     Bitmap.fromSamples(width, height, maxval, samples.toIndexedSeq)
 
+  // Perf: byte loops that move the cursor, no slices or strings.
   private def skipSpaceAndComments(): Unit =
     while pos < bytes.length && (isSpace(bytes(pos)) || bytes(pos) == '#') do
       if bytes(pos) == '#' then
@@ -154,6 +157,7 @@ private final class PpmReader(bytes: Array[Byte]):
     if pos >= bytes.length then fail(s"expected $what ${where(pos)}, found the end of the file")
     if !isDigit(bytes(pos)) then fail(s"expected $what ${where(pos)}, found ${shown(pos)}")
     val start = pos
+    // Perf: digits accumulated in place (capped above `max`, so it cannot overflow).
     var value = 0L
     while pos < bytes.length && isDigit(bytes(pos)) do
       value = Math.min(value * 10 + (bytes(pos) - '0'), max.toLong + 1)
@@ -179,8 +183,9 @@ private final class PpmReader(bytes: Array[Byte]):
     val pixel = sample / 3
     s"(pixel ${pixel % width}, ${pixel / width})"
 
+  // Why: unwinds the decoder to `read`, which turns it into a Left; it never leaves this file.
   private def fail(message: String): Nothing = throw PpmReader.Malformed(message)
 
 private object PpmReader:
   /** The reader's internal signal; it never escapes [[PpmReader.read]]. */
-  final case class Malformed(message: String) extends Exception(message, null, false, false)
+  final case class Malformed(message: String) extends Exception(message) with NoStackTrace

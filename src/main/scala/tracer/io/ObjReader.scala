@@ -8,15 +8,16 @@ import tracer.geometry.SurfaceCoordinates
 import tracer.math.Vec3
 
 /** One face of an OBJ file after fanning: three corners in the file's coordinates, their
-  * texture coordinates when every corner has one, and their `vn` normals (as written, not
-  * normalised) when every corner has one.
+  * texture coordinates when every corner has one, their `vn` normals (as written, not
+  * normalised) when every corner has one, and the corners' `v` indices (0-based).
   */
 final case class ObjTriangle(
     a: Vec3,
     b: Vec3,
     c: Vec3,
     uv: Option[(SurfaceCoordinates, SurfaceCoordinates, SurfaceCoordinates)],
-    normals: Option[(Vec3, Vec3, Vec3)] = None
+    normals: Option[(Vec3, Vec3, Vec3)] = None,
+    vertices: (Int, Int, Int) = (0, 0, 0)
 )
 
 /** The triangles of an OBJ file, and the kinds of statement it skipped (for one warning). */
@@ -118,7 +119,14 @@ private final class ObjParser(reader: BufferedReader, name: String):
     for k <- 1 until v.length - 1 do
       val uv      = Option.when(textured)((uvAt(t(0)), uvAt(t(k)), uvAt(t(k + 1))))
       val corners = Option.when(normed)((normalAt(n(0)), normalAt(n(k)), normalAt(n(k + 1))))
-      triangles += ObjTriangle(vertexAt(v(0)), vertexAt(v(k)), vertexAt(v(k + 1)), uv, corners)
+      triangles += ObjTriangle(
+        vertexAt(v(0)),
+        vertexAt(v(k)),
+        vertexAt(v(k + 1)),
+        uv,
+        corners,
+        (v(0), v(k), v(k + 1))
+      )
 
   private def vertexAt(i: Int) = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
   private def normalAt(i: Int) = Vec3(normals(3 * i), normals(3 * i + 1), normals(3 * i + 2))

@@ -1,8 +1,8 @@
 package tracer.io
 
-import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.geometry.*
 import tracer.image.Colour
-import tracer.math.Vec3
+import tracer.math.{Placement, Vec3}
 import tracer.scene.*
 
 /** Writes scenes in the XML format that [[SceneXml]] reads, so that scenes built in code (the
@@ -43,24 +43,79 @@ object SceneWriter:
   )
 
   private def sceneObject(o: SceneObject): String =
-    val surface = this.surface(o.surface)
-    o.shape match
+    shape(o.shape, o, 0, Some(o.surface), Placement.Identity)
+
+  /** The element for `s`, whose first leaf is number `leaf` of `o`'s shape, with `surface` and
+    * `placement` written inside it. A child of a combination gets a surface of its own only where
+    * its surface is not the whole object's (the version 3 rule: children without one inherit it);
+    * a child's `ior` means nothing and is not written.
+    */
+  private def shape(
+      s: Shape,
+      o: SceneObject,
+      leaf: Int,
+      surface: Option[Surface],
+      placement: Placement
+  ): String =
+    val inner = surface.fold("")(this.surface) + place(placement)
+    val scale = if placement.scale != 1 then s""" scale="${number(placement.scale)}"""" else ""
+    s match
       case s: Sphere =>
-        s"""<sphere radius="${number(s.radius)}">${vector("centre", s.centre)}""" +
-          s"${vector("pole", s.pole)}${vector("equator", s.equator)}$surface</sphere>"
+        s"""<sphere radius="${number(s.radius)}"$scale>${vector("centre", s.centre)}""" +
+          s"${vector("pole", s.pole)}${vector("equator", s.equator)}$inner</sphere>"
       case p: Plane =>
-        s"""<plane distance="${number(p.distance)}">${vector("normal", p.normal)}$surface</plane>"""
+        s"""<plane distance="${number(p.distance)}"$scale>${vector(
+            "normal",
+            p.normal
+          )}$inner</plane>"""
       case t: Triangle =>
         require(
           t.cornerNormals.isEmpty,
           "a smooth triangle cannot be written as <triangle>: use <mesh smooth=\"true\">"
         )
-        s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}$surface</triangle>"
+        s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}$inner</triangle>"
+      case b: Box =>
+        s"<box$scale>${vector("corner1", b.corner1)}${vector("corner2", b.corner2)}$inner</box>"
+      case c: Cone =>
+        val open  = if c.open then """ open="true"""" else ""
+        val parts = s"${vector("base", c.base)}${vector("cap", c.cap)}$inner"
+        if c.baseRadius == c.capRadius then
+          s"""<cylinder radius="${number(c.baseRadius)}"$open$scale>$parts</cylinder>"""
+        else
+          s"""<cone base-radius="${number(c.baseRadius)}" cap-radius="${number(
+              c.capRadius
+            )}"$open$scale>$parts</cone>"""
+      case t: Torus =>
+        s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>$inner</torus>"""
+      case p: Placed =>
+        require(placement.isIdentity, "a placed shape cannot be placed again in the scene format")
+        shape(p.shape, o, leaf, surface, p.placement)
+      case c: Csg =>
+        val name = c.operation match
+          case CsgOperation.Union        => "union"
+          case CsgOperation.Intersection => "intersection"
+          case CsgOperation.Difference   => "difference"
+        val children = c.children.indices.map { i =>
+          val first = leaf + c.firstLeaves(i)
+          val own   = o.surfaceOf(first)
+          val mine  = Option.when(own != o.surface)(own.copy(ior = Surface().ior))
+          shape(c.children(i), o, first, mine, Placement.Identity)
+        }
+        s"<$name$scale>${children.mkString}$inner</$name>"
+
+  private def place(p: Placement): String =
+    (if p.rotate != Vec3.Zero then vector("rotate", p.rotate) else "") +
+      (if p.translate != Vec3.Zero then vector("translate", p.translate) else "")
 
   private def surface(s: Surface): String =
     val pigment = s.pigment match
       case Pigment.Solid(c)          => colour("colour", c)
       case Pigment.Textured(texture) => s"""<texture file="${escape(texture.name)}"/>"""
+      case c: Pigment.Checker        =>
+        s"""<checker size="${number(c.size)}">${colour("colour", c.first)}${colour(
+            "colour",
+            c.second
+          )}</checker>"""
     val defaults = Surface()
     val extras   = List(
       ("phong", s.phong, defaults.phong),

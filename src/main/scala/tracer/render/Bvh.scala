@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Plane, Ray, Shape, Sphere, Triangle}
+import tracer.geometry.{Ray, Shape}
 
 /** A bounding volume hierarchy over the bounded shapes of a scene (spheres and triangles), built
   * once with the binned surface area heuristic and stored as flat arrays.
@@ -158,7 +158,7 @@ object Bvh:
   private val Bins = 16
 
   /** True for the shapes the hierarchy indexes: everything with finite bounds. */
-  def isBounded(shape: Shape): Boolean = !shape.isInstanceOf[Plane]
+  def isBounded(shape: Shape): Boolean = Shape.bounds(shape).isDefined
 
   /** Top-down binned-SAH construction (Wald 2007), kept local: the arrays it fills become the
     * immutable tree.
@@ -202,16 +202,11 @@ object Bvh:
       )
 
     private def bound(i: Int): Unit =
-      shapes(i) match
-        case s: Sphere =>
-          setBox(i, 0, s.centre.x - s.radius, s.centre.x + s.radius)
-          setBox(i, 1, s.centre.y - s.radius, s.centre.y + s.radius)
-          setBox(i, 2, s.centre.z - s.radius, s.centre.z + s.radius)
-        case t: Triangle =>
-          setBox(i, 0, t.t0.x min t.t1.x min t.t2.x, t.t0.x max t.t1.x max t.t2.x)
-          setBox(i, 1, t.t0.y min t.t1.y min t.t2.y, t.t0.y max t.t1.y max t.t2.y)
-          setBox(i, 2, t.t0.z min t.t1.z min t.t2.z, t.t0.z max t.t1.z max t.t2.z)
-        case _: Plane => () // never indexed
+      Shape.bounds(shapes(i)).foreach { b =>
+        setBox(i, 0, b.lo.x, b.hi.x)
+        setBox(i, 1, b.lo.y, b.hi.y)
+        setBox(i, 2, b.lo.z, b.hi.z)
+      }
 
     private def setBox(i: Int, axis: Int, low: Double, high: Double): Unit =
       val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))

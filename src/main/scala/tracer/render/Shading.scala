@@ -32,7 +32,7 @@ final class Shading(world: World, mode: ShadingMode):
           // Equations 40 and 43: shadow and reflected rays start just off the surface, on the
           // side the ray came from (the geometric side, even where a smooth normal leans).
           val s0      = hit.point + hit.normal * Shading.Epsilon
-          val surface = world.surface(i)
+          val surface = world.surface(i, hit.leaf)
           lit(surface, pigment(i, hit), normal, normal != hit.normal, s0, ray) +
             beyond(i, surface, hit, normal, s0, ray, depth, insides)
 
@@ -146,12 +146,13 @@ final class Shading(world: World, mode: ShadingMode):
         case None            =>
           trace(Ray(s0, Refraction.reflect(ray.direction, normal)), depth - 1, insides)
 
-  /** The surface colour C at the hit: the texel there, or the plain colour. */
-  private def pigment(i: Int, hit: Hit): Colour = world.surface(i).pigment match
+  /** The surface colour C at the hit: the texel or checker cell there, or the plain colour. */
+  private def pigment(i: Int, hit: Hit): Colour = world.surface(i, hit.leaf).pigment match
     case Pigment.Solid(c)          => c
     case Pigment.Textured(texture) =>
-      val uv = Shape.surfaceCoordinates(world.shape(i), hit.point)
+      val uv = Shape.surfaceCoordinates(world.shape(i), hit.point, hit.leaf)
       texture.colourAt(uv.u, uv.v)
+    case checker: Pigment.Checker => Pigment.checkerColour(checker, hit.point)
 
 /** Constants and pure terms of the shading model. */
 object Shading:

@@ -78,7 +78,8 @@ final class Shadows(world: World, stack: Array[Int]):
       val i   = world.nearest(ray, stack)
       val t   = if i < 0 then Double.PositiveInfinity else Shape.distance(world.shape(i), ray)
       if t < left then
-        share *= world.surface(i).transmit
+        val leaf = if world.hasLeafSurfaces(i) then Shape.hitAt(world.shape(i), ray, t).leaf else 0
+        share *= world.surface(i, leaf).transmit
         // Step just past the surface, so the next query does not find it again.
         origin = ray.at(t + Shading.Epsilon)
         left -= t + Shading.Epsilon

@@ -1,15 +1,16 @@
 package tracer.render
 
 import tracer.geometry.{Ray, Shape}
-import tracer.scene.{Light, Scene, Surface}
+import tracer.scene.{Light, Scene, SceneObject, Surface}
 
 /** A scene compiled for tracing: its shapes and surfaces in flat arrays, the bounded shapes in a
   * [[Bvh]], the planes (unbounded) in a list of their own. Built once per picture from the
   * immutable [[tracer.scene.Scene]] and never changed after.
   */
 final class World(scene: Scene):
-  private val shapes: Array[Shape]     = scene.objects.map(_.shape).toArray
-  private val surfaces: Array[Surface] = scene.objects.map(_.surface).toArray
+  private val objects: Array[SceneObject] = scene.objects.toArray
+  private val shapes: Array[Shape]        = objects.map(_.shape)
+  private val surfaces: Array[Surface]    = objects.map(_.surface)
   private val planes: Array[Int] = shapes.indices.filterNot(i => Bvh.isBounded(shapes(i))).toArray
   private val bvh                = Bvh(shapes.toIndexedSeq)
 
@@ -24,13 +25,19 @@ final class World(scene: Scene):
     lights.iterator.flatMap(_.area).map(a => a.samplesA * a.samplesB).maxOption.getOrElse(0)
 
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
-  val transmits: Boolean = surfaces.exists(_.transmit > 0)
+  val transmits: Boolean = objects.exists(_.surfaces.exists(_.transmit > 0))
 
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)
 
-  /** The surface of shape `i`. */
+  /** The surface of shape `i` as a whole (for a CSG combination, the one that holds its `ior`). */
   def surface(i: Int): Surface = surfaces(i)
+
+  /** The surface that primitive `leaf` of shape `i` shows (see [[tracer.geometry.Hit.leaf]]). */
+  def surface(i: Int, leaf: Int): Surface = objects(i).surfaceOf(leaf)
+
+  /** True when shape `i` shows more than one surface, so a hit must say which leaf it is on. */
+  def hasLeafSurfaces(i: Int): Boolean = objects(i).leafSurfaces.nonEmpty
 
   /** Scratch space for one thread's queries ([[nearest]], [[occluded]]). */
   def newStack(): Array[Int] = new Array[Int](Bvh.StackSize)

@@ -2,7 +2,7 @@ package tracer.scene
 
 import tracer.geometry.Shape
 import tracer.image.{Bitmap, Colour}
-import tracer.math.Vec3
+import tracer.math.{Placement, Vec3}
 
 /** A scene as the XML describes it: a camera, a background, lights and objects, all immutable.
   *
@@ -98,8 +98,25 @@ object AreaLight:
   private def along(axis: Vec3, i: Int, samples: Int): Vec3 =
     if samples > 1 then axis * (i.toDouble / (samples - 1) - 0.5) else Vec3.Zero
 
-/** A shape with the surface that colours it. */
-final case class SceneObject(shape: Shape, surface: Surface = Surface())
+/** A shape with the surface that colours it.
+  *
+  * @param shape        the geometry
+  * @param surface      the surface of the whole; for a CSG combination its `ior` is the interior
+  *   of the whole object (docs/scene-format.md, Glass solids)
+  * @param leafSurfaces for a CSG combination, the surface of each of its primitives, numbered
+  *   depth-first as [[tracer.geometry.Csg]] numbers them; empty when every part shows `surface`
+  */
+final case class SceneObject(
+    shape: Shape,
+    surface: Surface = Surface(),
+    leafSurfaces: Vector[Surface] = Vector.empty
+):
+  /** The surface shown by primitive `leaf` of the shape (0 for a shape that is not a combination). */
+  def surfaceOf(leaf: Int): Surface =
+    if leafSurfaces.isEmpty then surface else leafSurfaces(leaf)
+
+  /** Every surface the object shows. */
+  def surfaces: Vector[Surface] = if leafSurfaces.isEmpty then Vector(surface) else leafSurfaces
 
 /** How a surface reflects and lets through light (scene-format.md; the last six parameters are
   * version 2, each off by default, each rendering as POV-Ray's finish of the same name).
@@ -143,6 +160,34 @@ enum Pigment:
 
   /** An image mapped onto the shape (rendering.md, Textures). */
   case Textured(texture: Texture)
+
+  /** POV-Ray's `checker`: cubes of side `size` alternating between two colours in the space of
+    * the element that carries the surface (docs/rendering.md, The checker pattern).
+    *
+    * @param first  the colour of the cube at the origin's corner (even cells)
+    * @param second the colour of its neighbours (odd cells)
+    * @param size   the side of a cube, > 0
+    * @param space  the placements that take the pattern's space to the world: the placement of
+    *   the element that carries the surface, then of each element enclosing it, innermost first
+    */
+  case Checker(first: Colour, second: Colour, size: Double = 1, space: List[Placement] = Nil)
+
+/** The pattern rules of [[Pigment]]. */
+object Pigment:
+  /** How far a point may sit below a cell's boundary and still count as in the next cell: POV-Ray
+    * adds its EPSILON to each coordinate before rounding down.
+    */
+  val CheckerTolerance: Double = 1e-10
+
+  /** The colour of checker `c` at world point `p`: cell ⌊x + δ⌋ + ⌊y + δ⌋ + ⌊z + δ⌋ of the
+    * point in the pattern's space scaled by 1/size, `first` when even, `second` when odd.
+    */
+  def checkerColour(c: Checker, p: Vec3): Colour =
+    val q = c.space.foldRight(p)((placement, q) => placement.transform.pointBack(q)) * (1 / c.size)
+    val cell =
+      Math.floor(q.x + CheckerTolerance) + Math.floor(q.y + CheckerTolerance) +
+        Math.floor(q.z + CheckerTolerance)
+    if Math.floorMod(cell.toLong, 2L) == 0 then c.first else c.second
 
 /** An image used as a texture, with the name it was loaded from (for messages).
   *

@@ -96,9 +96,9 @@ class MainOptionsSuite extends munit.FunSuite with Images:
 
   dir.test("-R bands of a mesh scene stack up to the whole picture"): d =>
     val scene = Files.readString(scenes.resolve("meshes.xml"))
-    run(scenes, "-x", "40", d.resolve("whole.ppm").toString)(scene)
+    run(scenes, "-x", "40", d.resolve("whole.ppm").toString)(scene): Unit
     val bands = List((0, 7), (7, 8), (8, 23)).map { (a, b) =>
-      run(scenes, "-x", "40", "--rows", s"$a:$b", d.resolve(s"$a.ppm").toString)(scene)
+      run(scenes, "-x", "40", "--rows", s"$a:$b", d.resolve(s"$a.ppm").toString)(scene): Unit
       readImage(d.resolve(s"$a.ppm"))
     }
     assertEquals(Bitmap.stack(bands), readImage(d.resolve("whole.ppm")))
@@ -116,8 +116,8 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     assertEquals(Files.readString(d.resolve("o.ppm")), "old")
 
   dir.test("-g 1 is byte-identical to no -g; -g srgb and -g 2.2 encode every channel"): d =>
-    run(d, "-x", "40", "plain.ppm")(simple)
-    run(d, "-x", "40", "-g", "1", "g1.ppm")(simple)
+    run(d, "-x", "40", "plain.ppm")(simple): Unit
+    run(d, "-x", "40", "-g", "1", "g1.ppm")(simple): Unit
     assertEquals(bytes(d.resolve("g1.ppm")), bytes(d.resolve("plain.ppm")))
     val plain = readImage(d.resolve("plain.ppm"))
     for (option, encoding) <- List("srgb" -> Encoding.Srgb, "2.2" -> Encoding.Power(2.2)) do
@@ -143,15 +143,15 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     assertFailed(run(d, "--size")("<scene>"), 1, "scene")
 
   dir.test("--stack writes OUTPUT as the images one below the other, whole or not at all"): d =>
-    run(d, "-x", "20", "-R", "0:4", "top.ppm")(simple)
-    run(d, "-x", "20", "-R", "4:15", "bottom.png")(simple)
-    run(d, "-x", "20", "-R", "0:15", "whole.ppm")(simple)
+    run(d, "-x", "20", "-R", "0:4", "top.ppm")(simple): Unit
+    run(d, "-x", "20", "-R", "4:15", "bottom.png")(simple): Unit
+    run(d, "-x", "20", "-R", "0:15", "whole.ppm")(simple): Unit
     assertEquals(
       run(d, "--stack", "top.ppm", "--stack", "bottom.png", "joined.ppm")(),
       Run(0, "", "")
     )
     assertEquals(bytes(d.resolve("joined.ppm")), bytes(d.resolve("whole.ppm")))
-    run(d, "-x", "21", "-R", "0:4", "wide.ppm")(simple)
+    run(d, "-x", "21", "-R", "0:4", "wide.ppm")(simple): Unit
     Files.writeString(d.resolve("out.png"), "old")
     assertFailed(
       run(d, "--stack", "top.ppm", "--stack", "wide.ppm", "out.png")(),
@@ -175,7 +175,7 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     assertEquals(times.length, 4, r.out)
     for (scene, i) <- frames.zipWithIndex do
       assert(times(i).matches(s"Tracetime: \\d+ ms frame $i\\.png"), times(i))
-      run(d, "-x", "40", "-a", "2", "-i", scenes.resolve(scene).toString, s"single $i.png")()
+      run(d, "-x", "40", "-a", "2", "-i", scenes.resolve(scene).toString, s"single $i.png")(): Unit
       assertEquals(bytes(d.resolve(s"frame $i.png")), bytes(d.resolve(s"single $i.png")), scene)
 
   dir.test("--batch: a bad frame is named, the others are rendered, and the status is 1"): d =>
@@ -207,7 +207,7 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     Files.writeString(d.resolve("s.xml"), simple)
     Files.writeString(d.resolve("list.txt"), "s.xml\ttop.ppm\t0:10\ns.xml\trest.ppm\t10:30\n")
     assertEquals(run(d, "-x", "40", "--batch", "list.txt")(), Run(0, "", ""))
-    run(d, "-x", "40", "-i", "s.xml", "whole.ppm")()
+    run(d, "-x", "40", "-i", "s.xml", "whole.ppm")(): Unit
     val joined = Bitmap.stack(List("top.ppm", "rest.ppm").map(n => readImage(d.resolve(n))))
     assertEquals(joined, readImage(d.resolve("whole.ppm")))
     Files.writeString(d.resolve("bad.txt"), "s.xml\tx.ppm\t3:2\n")

@@ -3,6 +3,7 @@ package tracer.cli
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
+import scala.jdk.CollectionConverters.*
 import tracer.image.{Bitmap, Colour, Ppm}
 import tracer.testkit.Images
 
@@ -45,7 +46,7 @@ class MainSuite extends munit.FunSuite with Images:
     expected.foreach(e => assert(r.err.contains(e), s"'${r.err.trim}' does not mention '$e'"))
 
   private def assertNoFilesBut(d: Path, names: String*)(using munit.Location): Unit =
-    val present = Files.list(d).toArray.toList.map(_.asInstanceOf[Path].getFileName.toString)
+    val present = Files.list(d).toList.asScala.toList.map(_.getFileName.toString)
     assertEquals(present.sorted, names.toList.sorted)
 
   private val samples = List(
@@ -104,14 +105,14 @@ class MainSuite extends munit.FunSuite with Images:
     )
 
   dir.test("the picture has the resolved size: -x 64 with the default camera is 64×48"): d =>
-    run(d, simple, "-x", "64", "o.ppm")
+    run(d, simple, "-x", "64", "o.ppm"): Unit
     val image = Ppm.read(Files.readAllBytes(d.resolve("o.ppm"))).toOption.get
     assertEquals((image.width, image.height), (64, 48))
 
   dir.test("-z, -w and -h override the scene's camera"): d =>
-    run(d, simple, "-x", "32", "-y", "24", "plain.ppm")
-    run(d, simple, "-x", "32", "-y", "24", "-z", "2", "zoomed.ppm")
-    run(d, simple, "-x", "32", "-y", "24", "-w", "2", "-h", "1.5", "wide.ppm")
+    run(d, simple, "-x", "32", "-y", "24", "plain.ppm"): Unit
+    run(d, simple, "-x", "32", "-y", "24", "-z", "2", "zoomed.ppm"): Unit
+    run(d, simple, "-x", "32", "-y", "24", "-w", "2", "-h", "1.5", "wide.ppm"): Unit
     val List(plain, zoomed, wide) = List("plain.ppm", "zoomed.ppm", "wide.ppm").map(n =>
       Ppm.read(Files.readAllBytes(d.resolve(n))).toOption.get
     )

@@ -89,8 +89,8 @@ class ShapeSuite extends munit.FunSuite with Approx:
     intercept[IllegalArgumentException](Triangle(Vec3.Zero, Vec3(1, 1, 1), Vec3(2, 2, 2)))
 
   test("invalid shapes cannot be built"):
-    intercept[IllegalArgumentException](Sphere(Vec3.Zero, 0))
+    intercept[IllegalArgumentException](Sphere(Vec3.Zero, 0)): Unit
     intercept[IllegalArgumentException](
       Sphere(Vec3.Zero, 1, pole = Vec3.UnitY, equator = Vec3(0, 1, 1))
-    )
+    ): Unit
     intercept[IllegalArgumentException](Plane.at(Vec3.Zero, 1))

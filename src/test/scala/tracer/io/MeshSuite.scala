@@ -6,6 +6,7 @@ import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
 import tracer.render.{CameraConfig, Renderer}
 import tracer.scene.*
+import tracer.testkit.Scenes.firstShape
 import tracer.testkit.Approx
 
 /** The `<mesh>` element: placement, texture coordinates, and pictures equal to hand-written triangles. */
@@ -39,7 +40,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj" scale="2"><rotate x="90" y="90" z="0"/><translate x="1" y="2" z="3"/></mesh>""",
       "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3"
     )
-    val t = placed.objects.head.shape.asInstanceOf[Triangle]
+    val t = placed.firstShape[Triangle]
     // (1,0,0)·2 = (2,0,0): Rx(90) keeps it, Ry(90) gives (0,0,−2), + (1,2,3) = (1,2,1).
     assertVecClose(t.t0, Vec3(1, 2, 1), 1e-12)
     // (0,2,0): Rx(90) → (0,0,2); Ry(90) → (2,0,0); + T = (3,2,3).
@@ -51,7 +52,7 @@ class MeshSuite extends munit.FunSuite with Approx:
     val t = scene(
       """<mesh file="m.obj"><rotate x="0" y="0" z="90"/></mesh>""",
       "v 1 0 0\nv 0 0 1\nv 0 1 0\nf 1 2 3"
-    ).objects.head.shape.asInstanceOf[Triangle]
+    ).firstShape[Triangle]
     assertVecClose(t.t0, Vec3(0, 1, 0), 1e-12)
     assertVecClose(t.t2, Vec3(-1, 0, 0), 1e-12)
 
@@ -115,7 +116,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj"><surface><texture file="c.ppm"/></surface></mesh>""",
       quad + "f 1/1 2/2 3/3 4/4"
     )
-    val t = s.objects.head.shape.asInstanceOf[Triangle]
+    val t = s.firstShape[Triangle]
     assertEquals(
       t.textureCorners,
       Some((SurfaceCoordinates(0, 0), SurfaceCoordinates(2, 0), SurfaceCoordinates(2, 2)))
@@ -144,7 +145,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj" smooth="true" scale="3"><rotate x="0" y="90" z="0"/><translate x="5" y="0" z="0"/></mesh>""",
       bent + "f 1//1 2//2 3//3"
     )
-    val t    = placed.objects.head.shape.asInstanceOf[Triangle]
+    val t    = placed.firstShape[Triangle]
     val half = Math.sqrt(0.5)
     // Ry(90) takes (x, y, z) to (z, y, −x).
     val (n0, n1, n2) = t.cornerNormals.getOrElse(fail("no normals"))
@@ -154,11 +155,11 @@ class MeshSuite extends munit.FunSuite with Approx:
 
   test("without smooth, or on a face lacking a normal at a corner, a mesh face stays flat"):
     val flat = scene("""<mesh file="m.obj"/>""", bent + "f 1//1 2//2 3//3")
-    assertEquals(flat.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+    assertEquals(flat.firstShape[Triangle].cornerNormals, None)
     val partly = scene("""<mesh file="m.obj" smooth="true"/>""", bent + "f 1//1 2 3//3")
-    assertEquals(partly.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+    assertEquals(partly.firstShape[Triangle].cornerNormals, None)
     val explicit = scene("""<mesh file="m.obj" smooth="false"/>""", bent + "f 1//1 2//2 3//3")
-    assertEquals(explicit.objects.head.shape.asInstanceOf[Triangle].cornerNormals, None)
+    assertEquals(explicit.firstShape[Triangle].cornerNormals, None)
 
   test("a smooth face shades with its corners' normals blended by barycentric weights"):
     import tracer.geometry.{Hit, Ray, Shape}

@@ -23,19 +23,23 @@ class ObjReaderSuite extends munit.FunSuite:
     (SurfaceCoordinates(0, 0), SurfaceCoordinates(1, 0), SurfaceCoordinates(1, 1))
 
   test("all four vertex forms of a face: v, v/vt, v//vn, v/vt/vn"):
-    assertEquals(mesh(square + "f 1 2 3").triangles, Vector(ObjTriangle(p0, p1, p2, None)))
+    val first = (0, 1, 2)
+    assertEquals(
+      mesh(square + "f 1 2 3").triangles,
+      Vector(ObjTriangle(p0, p1, p2, None, None, first))
+    )
     assertEquals(
       mesh(square + "f 1/1 2/2 3/3").triangles,
-      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2))))
+      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2)), None, first))
     )
     val n = Vec3(0, 0, -1)
     assertEquals(
       mesh(square + "f 1//1 2//1 3//1").triangles,
-      Vector(ObjTriangle(p0, p1, p2, None, Some((n, n, n))))
+      Vector(ObjTriangle(p0, p1, p2, None, Some((n, n, n)), first))
     )
     assertEquals(
       mesh(square + "f 1/1/1 2/2/1 3/3/1").triangles,
-      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2)), Some((n, n, n))))
+      Vector(ObjTriangle(p0, p1, p2, Some((t0, t1, t2)), Some((n, n, n)), first))
     )
 
   test("normals are kept as written, per corner, only when every corner of the face has one"):
@@ -66,7 +70,10 @@ class ObjReaderSuite extends munit.FunSuite:
   test("quads and n-gons become fans (v0, vi, vi+1)"):
     assertEquals(
       mesh(square + "f 1 2 3 4").triangles,
-      Vector(ObjTriangle(p0, p1, p2, None), ObjTriangle(p0, p2, p3, None))
+      Vector(
+        ObjTriangle(p0, p1, p2, None, None, (0, 1, 2)),
+        ObjTriangle(p0, p2, p3, None, None, (0, 2, 3))
+      )
     )
     assertEquals(mesh(square + "v 0.5 2 0\nf 1 2 3 5 4").triangles.length, 3)
 

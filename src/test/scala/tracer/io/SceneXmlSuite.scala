@@ -5,6 +5,7 @@ import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
 import tracer.scene.*
+import tracer.testkit.Scenes.firstShape
 
 /** The XML scene format of scene-format.md: what it accepts and how it reports what it does not. */
 class SceneXmlSuite extends munit.FunSuite:
@@ -126,7 +127,7 @@ class SceneXmlSuite extends munit.FunSuite:
         """<sphere radius="1"><centre x="0" y="0" z="0"/><pole x="0" y="0" z="3"/><equator x="2" y="0" z="0"/></sphere>"""
       )
     )
-    val sphere = s.objects.head.shape.asInstanceOf[Sphere]
+    val sphere = s.firstShape[Sphere]
     assertEquals((sphere.unitPole, sphere.unitEquator), (Vec3.UnitZ, Vec3.UnitX))
 
   test("the first error in document order is the one reported"):
@@ -138,7 +139,7 @@ class SceneXmlSuite extends munit.FunSuite:
       withCamera(
         s"""<sphere radius="1"><centre x="0" y="0" z="0"/>$tex</sphere><sphere radius="1"><centre x="3" y="0" z="0"/>$tex</sphere>"""
       )
-    )
+    ): Unit
     assertEquals(loaded.toList, List("t.ppm"))
 
   // Errors: each names the element, its line and what is wrong.

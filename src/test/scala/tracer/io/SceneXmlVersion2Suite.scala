@@ -71,13 +71,13 @@ class SceneXmlVersion2Suite extends munit.FunSuite:
     assertError(sphere("""<surface ior="0"/>"""), 4, "surface", "ior", "greater than 0")
     assertError(sphere("""<surface ior="NaN"/>"""), 4, "surface", "ior", "finite decimal")
 
-  test("ior is allowed on spheres only"):
+  test("ior is allowed on spheres, closed solids and CSG elements only"):
     assertError(
       triangle("""<surface ior="1.5"/>"""),
       4,
       "surface",
       "ior",
-      "spheres only",
+      "spheres, closed solids and CSG elements only",
       "<triangle>"
     )
     assertError(
@@ -85,7 +85,7 @@ class SceneXmlVersion2Suite extends munit.FunSuite:
                    |<surface transmit="0.5" ior="1.3"/></plane>""".stripMargin),
       4,
       "surface",
-      "spheres only"
+      "spheres, closed solids and CSG elements only"
     )
     assertEquals(scene(triangle("""<surface transmit="0.5"/>""")).objects.head.surface.ior, 1.0)
 
@@ -156,9 +156,9 @@ class SceneXmlVersion2Suite extends munit.FunSuite:
       "only one"
     )
 
-  test("smooth must be true or false"):
+  test("smooth must be true, false or auto"):
     val mesh    = (smooth: String) => withCamera(s"""<mesh file="m.obj" smooth="$smooth"/>""")
     val sources = SceneSources(_ => Right(texture), _ => Left("not read"))
     SceneXml.parse(mesh("yes"), sources) match
-      case Left(e)  => assert(e.describe.contains("smooth must be true or false"), e.describe)
+      case Left(e)  => assert(e.describe.contains("smooth must be true, false or auto"), e.describe)
       case Right(s) => fail(s"parsed $s")

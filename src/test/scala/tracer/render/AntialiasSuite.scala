@@ -24,10 +24,19 @@ class AntialiasSuite extends munit.FunSuite:
   private val level = Camera(Vec3(0, 1, -5), Vec3(0, 1, 0))
   private val floor = matte(Plane.at(Vec3.UnitY, 0), Colour.White)
 
-  test("one sample a pixel gives exactly the plain picture"):
-    val scene  = Scene(level, lights = List(Light(Vec3(1, 2, -4))), objects = List(floor))
-    val config = CameraConfig(1, 1, 0.75, 16, 12)
-    assertEquals(Renderer.render(scene, config.copy(samples = 1)), Renderer.render(scene, config))
+  test("one sample a pixel is the ray through the pixel's centre"):
+    val scene      = Scene(level, objects = List(floor))
+    val config     = CameraConfig(1, 1, 0.75, 16, 12, mode = ShadingMode.Quick, samples = 1)
+    val projection = Projection(level, config)
+    val image      = Renderer.render(scene, config)
+    // In quick mode a floor sample is |rn · Rd| = |Rd.y|; a sky sample is black.
+    def seen(x: Double, y: Double) =
+      Colour.quantise(Math.max(0, -projection.ray(x, y).direction.y), 255)
+    for y <- 0 until 12; x <- 0 until 16 do
+      assertEquals(image.sample(x, y, 0), seen(x + 0.5, y + 0.5), s"pixel ($x, $y)")
+    // A sample at the pixel's corner would give another picture: the check above can fail.
+    val corner = for y <- 0 until 12; x <- 0 until 16 yield image.sample(x, y, 0) - seen(x, y)
+    assert(corner.exists(_ != 0), "the corners see what the centres see")
 
   test("a pixel straddling the horizon is the mean of what its samples see"):
     val scene  = Scene(level, objects = List(floor))

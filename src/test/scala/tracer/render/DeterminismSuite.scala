@@ -51,5 +51,5 @@ class DeterminismSuite extends munit.FunSuite:
       threads = 3,
       onRow = () =>
         rows.incrementAndGet(); ()
-    )
+    ): Unit
     assertEquals(rows.get, config.rows)

@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.geometry.{Plane, Shape, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour, Encoding}
 import tracer.math.Vec3
 import tracer.scene.*
@@ -125,15 +125,33 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     // Two surfaces each way: 0.8 · 0.8 of the wall, lit through the ball at 0.8 · 0.8.
     assertEquals(samples(render(scene)), grey(0.8 * 0.8 * 0.8 * 0.8))
 
-  test("refraction bends: a ball of index 1.5 shows a different part of the world than index 1"):
+  test("refraction bends: a clear ball of index 1 is unseen; of index 1.5, it changes only itself"):
     val stripe =
       matte(Triangle(Vec3(-0.3, -5, -2.9), Vec3(0.3, -5, -2.9), Vec3(0, 5, -2.9)), Colour(1, 0, 0))
-    def image(ior: Double) = render(
-      Scene(camera, lights = List(behindEye), objects = List(farWall, stripe, ball(1, ior))),
+    def image(balls: List[SceneObject]) = render(
+      Scene(camera, lights = List(behindEye), objects = List(farWall, stripe) ++ balls),
       x = 40,
       y = 30
     )
-    assertNotEquals(image(1.5), image(1.0))
+    val without  = image(Nil)
+    val straight = image(List(ball(1, 1.0)))
+    val bent     = image(List(ball(1, 1.5)))
+    // The pixels whose primary ray meets the ball, and the others.
+    val projection        = Projection(camera, CameraConfig(1, 1, 0.75, 40, 30))
+    val pixels            = for y <- 0 until 30; x <- 0 until 40 yield (x, y)
+    val (inside, outside) = pixels.partition((x, y) =>
+      Shape.distance(Sphere(Vec3.Zero, 1), projection.ray(x + 0.5, y + 0.5)).isFinite
+    )
+    assert(inside.size > 100 && outside.size > 100, s"${inside.size} inside")
+    def differ(a: Bitmap, b: Bitmap, x: Int, y: Int, by: Int) =
+      samples(a, x, y).zip(samples(b, x, y)).exists((p, q) => Math.abs(p - q) > by)
+    // Index 1 bends nothing: the clear ball shows what is behind it, as if it were not there.
+    assertEquals(pixels.filter(differ(straight, without, _, _, 1)), Vector.empty)
+    // Index 1.5 bends the rays through the ball alone: outside its outline nothing changes, and
+    // inside it the world behind is moved (the stripe's shadow on the wall, the wall's shading).
+    assertEquals(outside.filter(differ(bent, without, _, _, 0)), Vector.empty)
+    val moved = inside.count(differ(bent, without, _, _, 1))
+    assert(moved > inside.size / 10, s"$moved of ${inside.size} pixels inside the ball changed")
 
   test("transmitted rays count against the depth where they bend, not where they go straight on"):
     val scene = (ior: Double) =>

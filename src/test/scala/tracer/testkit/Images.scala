@@ -23,7 +23,8 @@ trait Images:
     */
   def assertGolden(actual: Bitmap, name: String)(using Location): Unit =
     val reference = Path.of("src/test/resources/golden", s"$name.png")
-    if sys.env.get("GOLDEN_UPDATE").contains("true") then Files.write(reference, Png.encode(actual))
+    if sys.env.get("GOLDEN_UPDATE").contains("true") then
+      Files.write(reference, Png.encode(actual)): Unit
     assertImageClose(actual, readImage(reference), name)
 
   /** Asserts that `actual` matches `expected` to within `tolerance` levels in every sample; on a

@@ -64,7 +64,7 @@ trait MovieWorkspace extends munit.FunSuite:
            |done
            |exec "${home.resolve("tracer")}" "$$@"
            |""".stripMargin
-      )
+      ): Unit
       d
     ,
     d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
@@ -127,7 +127,7 @@ trait MovieWorkspace extends munit.FunSuite:
     val bin = Files.createDirectories(dir)
     for tool <- tools do
       val real = run(List("bash", "-c", s"command -v $tool")).out.trim
-      if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real))
+      if real.nonEmpty then Files.createSymbolicLink(bin.resolve(tool), Path.of(real)): Unit
     bin
 
   /** A throwaway OpenSSH server on a free loopback port, for the current user, with fresh keys. */
@@ -174,7 +174,7 @@ trait MovieWorkspace extends munit.FunSuite:
       )
       // Privilege separation needs this directory when sshd runs as root.
       if System.getProperty("user.name") == "root" then
-        Files.createDirectories(Path.of("/run/sshd"))
+        Files.createDirectories(Path.of("/run/sshd")): Unit
       val sshd = Path.of("/usr/sbin/sshd")
       assert(
         Files.isExecutable(sshd),

@@ -1,5 +1,6 @@
 package tracer.testkit
 
+import scala.reflect.ClassTag
 import tracer.geometry.Shape
 import tracer.image.Colour
 import tracer.math.Vec3
@@ -19,3 +20,11 @@ object Scenes:
       reflection: Double = 0
   ): SceneObject =
     SceneObject(shape, Surface(diffuse, reflection, Pigment.Solid(colour)))
+
+  extension (scene: Scene)
+    /** The shape of the scene's first object as an `S`, or the test fails saying what it was. */
+    def firstShape[S <: Shape](using kind: ClassTag[S], at: munit.Location): S =
+      scene.objects.headOption.map(_.shape) match
+        case Some(kind(shape)) => shape
+        case other             =>
+          munit.Assertions.fail(s"expected a ${kind.runtimeClass.getSimpleName}, found $other")

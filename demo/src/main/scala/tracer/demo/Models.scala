@@ -21,6 +21,10 @@ object Models:
       normals: Vector[Vec3] = Vector.empty
   )
 
+  /** `v` scaled to length 1: the models' directions are never zero, so a zero one is a bug here. */
+  private def unit(v: Vec3): Vec3 =
+    v.normalised.get // nosemgrep: option-get — a zero direction is a bug in these generators: stop
+
   /** A sphere made by splitting each face of an icosahedron into four, `levels` times. */
   def icosphere(levels: Int): Model =
     val t     = (1 + Math.sqrt(5)) / 2
@@ -37,7 +41,7 @@ object Models:
       Vec3(t, 0, 1),
       Vec3(-t, 0, -1),
       Vec3(-t, 0, 1)
-    ).map(_.normalised.get)
+    ).map(unit)
     val faces0 = Vector(
       (0, 11, 5),
       (0, 5, 1),
@@ -67,7 +71,7 @@ object Models:
         .map((a, b) => (a min b, a max b))
         .distinct
       val index = midpoints.zipWithIndex.map((edge, k) => edge -> (vs.length + k)).toMap
-      val added = midpoints.map((a, b) => ((vs(a) + vs(b)) * 0.5).normalised.get)
+      val added = midpoints.map((a, b) => unit((vs(a) + vs(b)) * 0.5))
       def mid(a: Int, b: Int) = index((a min b, a max b))
       (
         vs ++ added,
@@ -98,8 +102,8 @@ object Models:
     val rings = (0 until segments).map { i =>
       val s        = 2 * Math.PI * i / segments
       val centre   = curve(s)
-      val tangent  = (curve(s + 1e-4) - curve(s - 1e-4)).normalised.get
-      val normal   = tangent.cross(Vec3.UnitY).normalised.get
+      val tangent  = unit(curve(s + 1e-4) - curve(s - 1e-4))
+      val normal   = unit(tangent.cross(Vec3.UnitY))
       val binormal = tangent.cross(normal)
       (0 until sides).map { j =>
         val a      = 2 * Math.PI * j / sides
@@ -154,7 +158,7 @@ object Models:
       dir.resolve("knot.obj"),
       obj(torusKnot(2, 3, 240, 12, 0.22), "a (2, 3) torus knot")
     )
-    Files.writeString(dir.resolve("terrain.obj"), obj(terrain(48), "a rolling terrain"))
+    Files.writeString(dir.resolve("terrain.obj"), obj(terrain(48), "a rolling terrain")): Unit
 
   /** Writes the models into the directory named by the first argument (default `scenes/models`). */
   def main(args: Array[String]): Unit = writeGallery(

@@ -52,14 +52,14 @@ object ProceduralTextures:
     Files.createDirectories(dir)
     def write(name: String, bitmap: Bitmap, bytes: Bitmap => Array[Byte]) =
       Files.write(dir.resolve(name), bytes(bitmap))
-    write("planet.ppm", draw(512, 256)(planet), Ppm.encode(_, PpmFormat.Binary))
+    write("planet.ppm", draw(512, 256)(planet), Ppm.encode(_, PpmFormat.Binary)): Unit
     write(
       "checker.png",
       draw(256, 256)(checker(8, 8, Colour.grey(0.95), Colour(0.1, 0.1, 0.12))),
       Png.encode
-    )
-    write("bricks.ppm", draw(128, 64)(bricks(8)), Ppm.encode(_, PpmFormat.Ascii))
-    write("marble.png", draw(256, 256)(marble), Png.encode)
+    ): Unit
+    write("bricks.ppm", draw(128, 64)(bricks(8)), Ppm.encode(_, PpmFormat.Ascii)): Unit
+    write("marble.png", draw(256, 256)(marble), Png.encode): Unit
 
   /** Writes the gallery's textures into the directory named by the first argument (default `scenes/textures`). */
   def main(args: Array[String]): Unit = writeGallery(
@@ -92,6 +92,6 @@ object ProceduralTextures:
 
   /** A fixed pseudo-random value in 0..1 for each integer lattice point (an integer hash). */
   private def lattice(x: Int, y: Int, z: Int): Double =
-    var h = x * 374761393 + y * 668265263 + z * 1274126177
-    h = (h ^ (h >>> 13)) * 1274126177
+    val h0 = x * 374761393 + y * 668265263 + z * 1274126177
+    val h  = (h0 ^ (h0 >>> 13)) * 1274126177
     ((h ^ (h >>> 16)) & 0xffffff).toDouble / 0xffffff

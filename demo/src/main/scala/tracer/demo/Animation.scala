@@ -81,7 +81,7 @@ object Animation:
     Files.writeString(
       dir.resolve("frames.txt"),
       names.mkString("# The frames of tracer's movie, in order.\n", "\n", "\n")
-    )
+    ): Unit
 
   /** Writes the frames into the directory named by the first argument (default `target/movie`). */
   def main(args: Array[String]): Unit = writeFrames(

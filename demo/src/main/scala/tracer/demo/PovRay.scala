@@ -1,0 +1,140 @@
+package tracer.demo
+
+import java.util.Locale
+import tracer.geometry.*
+import tracer.image.Colour
+import tracer.math.{Placement, Vec3}
+import tracer.render.{CameraConfig, Projection}
+import tracer.scene.*
+
+/** Writes a scene in POV-Ray 3.7's scene language, set up to draw the same picture as the tracer
+  * (the "twin" of docs/scene-format.md): no ambient light, no gamma, lights without fall-off,
+  * reflection untinted, the camera of equations 10–16 as POV-Ray's direction, right and up
+  * vectors, and version 2's highlights, transmission, refraction, area lights and smooth mesh
+  * faces as the finish, pigment, interior, `area_light` and `smooth_triangle` they stand for.
+  * Used to compare the two renderers' pictures and speed; textures are not exported (a textured
+  * surface becomes mid-grey). Render it with `+FP File_Gamma=1.0 -A` (or `File_Gamma=sRGB` for
+  * `-g srgb`).
+  */
+object PovRay:
+
+  /** The POV-Ray scene for `scene`, tracing up to `depth` reflections. With `quick`, the twin of
+    * quick mode (`-q`): one shadowless light at the eye and every surface its plain pigment
+    * with diffuse 1, which POV-Ray shades as colour · |rn · Rd|.
+    */
+  def write(scene: Scene, depth: Int = CameraConfig.DefaultDepth, quick: Boolean = false): String =
+    if !quick then twin(scene, depth, scene.lights.map(light))
+    else
+      val eye  = s"light_source { ${vec(scene.camera.location)} color rgb <1, 1, 1> shadowless }"
+      val flat = scene.objects.map(o =>
+        o.copy(surface = plain(o.surface), leafSurfaces = o.leafSurfaces.map(plain))
+      )
+      twin(scene.copy(objects = flat), depth, Seq(eye))
+
+  /** A surface as quick mode sees it: its pigment alone, diffuse 1. */
+  private def plain(s: Surface): Surface = Surface(diffuse = 1, pigment = s.pigment)
+
+  private def twin(scene: Scene, depth: Int, lights: Seq[String]): String =
+    val c                      = scene.camera
+    val (right, down, forward) = Projection(c, CameraConfig.forCamera(c)).basis
+    val lines                  = Vector(
+      "#version 3.7;",
+      s"global_settings { assumed_gamma 1 max_trace_level ${depth + 1} adc_bailout 0 ambient_light 0 }",
+      s"background { color rgb ${colour(scene.background)} }",
+      s"camera { location ${vec(c.location)} direction ${vec(forward * c.zoom)} right ${vec(right * c.width)} up ${vec(down * -c.height)} }"
+    ) ++ lights ++ scene.objects.map(sceneObject)
+    lines.mkString("", "\n", "\n")
+
+  private def light(l: Light): String =
+    val area =
+      l.area.fold("")(a => s" area_light ${vec(a.a)}, ${vec(a.b)}, ${a.samplesA}, ${a.samplesB}")
+    s"light_source { ${vec(l.location)} color rgb ${colour(l.colour)}$area }"
+
+  private def sceneObject(o: SceneObject): String =
+    val interior = if o.surface.ior != 1 then s" interior { ior ${num(o.surface.ior)} }" else ""
+    shape(o.shape, o, 0, Some(texture(o.surface)), interior)
+
+  /** The twin of `s`, whose first leaf is number `leaf` of `o`'s shape; `texture` is written on it
+    * (before its placement, so that a pattern moves with it), and a child of a combination gets
+    * one of its own only where its surface is not the whole object's.
+    */
+  private def shape(
+      s: Shape,
+      o: SceneObject,
+      leaf: Int,
+      texture: Option[String],
+      interior: String
+  ): String =
+    val t = texture.fold("")(" " + _) + interior
+    s match
+      case s: Sphere    => s"sphere { ${vec(s.centre)}, ${num(s.radius)}$t }"
+      case p: Plane     => s"plane { ${vec(p.normal)}, ${num(p.distance)}$t }"
+      case tr: Triangle =>
+        tr.cornerNormals match
+          case Some((n0, n1, n2)) =>
+            s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}$t }"
+          case None => s"triangle { ${vec(tr.t0)}, ${vec(tr.t1)}, ${vec(tr.t2)}$t }"
+      case b: Box  => s"box { ${vec(b.corner1)}, ${vec(b.corner2)}$t }"
+      case c: Cone =>
+        val open = if c.open then " open" else ""
+        if c.baseRadius == c.capRadius then
+          s"cylinder { ${vec(c.base)}, ${vec(c.cap)}, ${num(c.baseRadius)}$open$t }"
+        else
+          s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$t }"
+      case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$t }"
+      case p: Placed =>
+        val inner = shape(p.shape, o, leaf, texture, interior)
+        inner.dropRight(1) + placement(p.placement) + "}"
+      case c: Csg =>
+        val name = c.operation match
+          case CsgOperation.Union        => "union"
+          case CsgOperation.Intersection => "intersection"
+          case CsgOperation.Difference   => "difference"
+        val children = c.children.indices.map { i =>
+          val first = leaf + c.firstLeaves(i)
+          val own   = o.surfaceOf(first)
+          val mine  = Option.when(own != o.surface)(this.texture(own))
+          shape(c.children(i), o, first, mine, "")
+        }
+        s"$name { ${children.mkString(" ")}$t }"
+
+  private def placement(p: Placement): String =
+    s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "
+
+  private def texture(f: Surface): String =
+    def rgbt(c: Colour) = s"rgbt <${num(c.r)}, ${num(c.g)}, ${num(c.b)}, ${num(f.transmit)}>"
+    val pigment         = f.pigment match
+      case Pigment.Solid(c)    => s"color ${rgbt(c)}"
+      case Pigment.Textured(_) => s"color ${rgbt(Colour.grey(0.5))}"
+      case c: Pigment.Checker  =>
+        s"checker color ${rgbt(c.first)}, color ${rgbt(c.second)} scale ${num(c.size)}"
+    val finish = s"finish { ambient 0 diffuse ${num(f.diffuse)} reflection ${num(f.reflection)}" +
+      s" phong ${num(f.phong)} phong_size ${num(f.phongSize)}" +
+      s" specular ${num(f.specular)} roughness ${num(f.roughness)} }"
+    s"texture { pigment { $pigment } $finish }"
+
+  private def vec(v: Vec3): String      = s"<${num(v.x)}, ${num(v.y)}, ${num(v.z)}>"
+  private def colour(c: Colour): String = s"<${num(c.r)}, ${num(c.g)}, ${num(c.b)}>"
+  private def num(d: Double): String    = String.format(Locale.ROOT, "%.17g", d)
+
+  /** Prints the POV-Ray twin of the scene file named by the first argument (its textures and
+    * meshes relative to its directory), tracing as many reflections as the second (default 5).
+    * With `--beside FILE…`, writes each FILE's twin beside it instead (`frame.xml` → `frame.pov`).
+    */
+  def main(args: Array[String]): Unit =
+    def twin(name: String, depth: Int): String =
+      val file = java.nio.file.Path.of(name).toAbsolutePath
+      tracer.io.SceneXml.load(file, file.getParent) match
+        case Right(scene) => write(scene, depth)
+        case Left(error)  => System.err.println(error); sys.exit(1)
+    args.toList match
+      case "--beside" :: files =>
+        files.foreach { name =>
+          java.nio.file.Files.writeString(
+            java.nio.file.Path.of(name.replaceAll("\\.xml$", "") + ".pov"),
+            twin(name, CameraConfig.DefaultDepth)
+          )
+        }
+      case name :: depth =>
+        print(twin(name, depth.headOption.fold(CameraConfig.DefaultDepth)(_.toInt)))
+      case Nil => System.err.println("usage: PovRay SCENE [DEPTH] | --beside SCENE..."); sys.exit(2)

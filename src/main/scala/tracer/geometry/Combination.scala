@@ -1,0 +1,36 @@
+package tracer.geometry
+
+/** The rules of [[Csg]]: which crossings of its children are crossings of the whole. */
+private[geometry] object Combination:
+
+  /** The crossings of `csg` along `ray` at t > 0, in increasing t, their leaves numbered in the
+    * whole tree. A child's crossing counts where the point is, for every other child, inside it
+    * (intersection), or inside the first and outside the others (difference); a union keeps
+    * them all.
+    */
+  def crossings(csg: Csg, ray: Ray): List[Crossing] =
+    val all = csg.children.indices.toList.flatMap { i =>
+      Shape
+        .crossings(csg.children(i), ray)
+        .filter(c => keeps(csg, i, ray.at(c.t)))
+        .map(c => c.copy(leaf = c.leaf + csg.firstLeaves(i)))
+    }
+    all.sortBy(_.t)
+
+  /** True when `p` is inside `csg`. */
+  def inside(csg: Csg, p: tracer.math.Vec3): Boolean = csg.operation match
+    case CsgOperation.Union        => csg.children.exists(Shape.inside(_, p))
+    case CsgOperation.Intersection => csg.children.forall(Shape.inside(_, p))
+    case CsgOperation.Difference   =>
+      Shape.inside(csg.children.head, p) && !csg.children.tail.exists(Shape.inside(_, p))
+
+  /** True when a crossing of child `i` at `p` is on the surface of the whole. */
+  private def keeps(csg: Csg, i: Int, p: tracer.math.Vec3): Boolean = csg.operation match
+    case CsgOperation.Union        => true
+    case CsgOperation.Intersection =>
+      csg.children.indices.forall(j => j == i || Shape.inside(csg.children(j), p))
+    case CsgOperation.Difference =>
+      csg.children.indices.forall { j =>
+        j == i || (if j == 0 then Shape.inside(csg.children(j), p)
+                   else !Shape.inside(csg.children(j), p))
+      }

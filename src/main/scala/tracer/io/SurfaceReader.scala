@@ -1,0 +1,93 @@
+package tracer.io
+
+import tracer.image.Colour
+import tracer.math.Placement
+import tracer.scene.{Pigment, Surface, Texture}
+
+/** Where a `<surface>` stands, which decides what it may hold.
+  *
+  * @param texturable true where a `<texture>` may be mapped (spheres, triangles, meshes)
+  * @param iorRefusal why `ior` is not allowed here, or `None` where it is
+  * @param space      the placements that take the pattern's space to the world, innermost first
+  *   (see [[tracer.scene.Pigment.Checker]])
+  */
+private[io] final case class SurfacePlace(
+    texturable: Boolean,
+    iorRefusal: Option[String],
+    space: List[Placement]
+)
+
+/** Reads `<surface>` with its colour, texture or checker pattern. Textures are loaded through
+  * `loadTexture`, which reports a file it cannot read as an error on the `<texture>` element.
+  */
+private[io] final class SurfaceReader(
+    loadTexture: (Element, String) => ElementRules.Result[Texture]
+):
+  import ElementRules.*
+
+  /** The one `<surface>` among `siblings` (the children of `owner`), if there is one. */
+  def optional(
+      owner: Element,
+      siblings: List[Element],
+      place: SurfacePlace
+  ): Result[Option[Surface]] =
+    atMostOne(owner, siblings, "surface").flatMap(traverseOption(_)(surface(owner, _, place)))
+
+  private def surface(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
+    for
+      children   <- contents(e, Vocabulary.SurfaceAttributes, Vocabulary.SurfaceChildren)
+      diffuse    <- bounded(e, "diffuse", 1.0, AtLeastZero)
+      reflection <- bounded(e, "reflection", 0.0, ZeroToOne)
+      phong      <- bounded(e, "phong", 0.0, AtLeastZero)
+      phongSize  <- positive(e, "phong-size", Surface.DefaultPhongSize)
+      specular   <- bounded(e, "specular", 0.0, AtLeastZero)
+      roughness  <- bounded(e, "roughness", Surface.DefaultRoughness, AboveZeroToOne)
+      transmit   <- bounded(e, "transmit", 0.0, ZeroToOne)
+      ior        <- positive(e, "ior", 1.0)
+      _       <- place.iorRefusal.filter(_ => e.attribute("ior").isDefined).fold(Right(()))(e.fail)
+      colour  <- atMostOne(e, children, "colour", "color")
+      texture <- atMostOne(e, children, "texture")
+      checker <- atMostOne(e, children, "checker")
+      _       <- (colour, texture, checker) match
+        case (Some(_), _, Some(c)) => c.fail("give a <colour> or a <checker>, not both")
+        case (_, Some(_), Some(c)) => c.fail("give a <texture> or a <checker>, not both")
+        case _                     => Right(())
+      pigment <- (texture, checker) match
+        case (Some(t), _) => this.texture(t, owner, place).map(Pigment.Textured(_))
+        case (_, Some(c)) => this.checker(c, place)
+        case (None, None) =>
+          colour.fold(Right(Colour.White))(ElementRules.colour(_, 1)).map(Pigment.Solid(_))
+    yield Surface(
+      diffuse,
+      reflection,
+      pigment,
+      phong,
+      phongSize,
+      specular,
+      roughness,
+      transmit,
+      ior
+    )
+
+  private def texture(e: Element, owner: Element, place: SurfacePlace): Result[Texture] =
+    for
+      _ <- contents(e, Vocabulary.TextureAttributes, Vocabulary.NoNames)
+      _ <- check(
+        place.texturable,
+        e,
+        s"textures are allowed on spheres and triangles only, not <${owner.name}>"
+      )
+      file    <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
+      texture <- loadTexture(e, file)
+    yield texture
+
+  /** A `<checker size>` with its two colours (scene-format v3, The checker pattern). */
+  private def checker(e: Element, place: SurfacePlace): Result[Pigment] =
+    for
+      children <- contents(e, Vocabulary.CheckerAttributes, Vocabulary.CheckerChildren)
+      size     <- positive(e, "size", 1.0)
+      colours  <- traverse(children)(ElementRules.colour(_, 1))
+      pigment  <- colours match
+        case List(first, second) => Right(Pigment.Checker(first, second, size, place.space))
+        case _ => e.fail(s"needs exactly two <colour> elements, got ${colours.length}")
+    yield pigment
