@@ -29,7 +29,7 @@ class DistSuite extends munit.FunSuite:
     _ =>
       val d = Files.createTempDirectory("tracer dist")
       // Open to everybody: the archive's user may be another one (below).
-      run(Seq("chmod", "777", d.toString), home)
+      assertEquals(run(Seq("chmod", "777", d.toString), home).status, 0)
       d
     ,
     d => Processes.deleteTree(d)
@@ -101,7 +101,7 @@ class DistSuite extends munit.FunSuite:
     val expected  = reference(d, 64)
     val user      = Files.createDirectories(d.resolve("empty home"))
     val elsewhere = Files.createDirectories(d.resolve("elsewhere"))
-    run(Seq("chmod", "777", user.toString, elsewhere.toString), d)
+    assertEquals(run(Seq("chmod", "777", user.toString, elsewhere.toString), d).status, 0)
     // A read-only install: as root, that takes another user (root writes anywhere); else chmod.
     val asUser =
       if Processes.isRoot then
@@ -138,7 +138,7 @@ class DistSuite extends munit.FunSuite:
 
     // A new jar (here: the same bytes, another time) makes a new cache and drops the old one.
     val jar = top.resolve("lib/tracer.jar")
-    run(Seq("chmod", "u+w", top.resolve("lib").toString), d)
+    assertEquals(run(Seq("chmod", "u+w", top.resolve("lib").toString), d).status, 0)
     Files.setLastModifiedTime(jar, java.nio.file.attribute.FileTime.fromMillis(86_400_000L))
     render("new-jar.png")
     val remade = caches(user)

@@ -46,7 +46,7 @@ object ManPage:
   def main(args: Array[String]): Unit =
     val page = roff(Options.usage, BuildInfo.version)
     args.headOption match
-      case Some(file) => Files.writeString(Path.of(file), page, UTF_8)
+      case Some(file) => Files.writeString(Path.of(file), page, UTF_8): Unit
       case None       => print(page)
 
   /** One option line of the usage as a tagged paragraph: the option in bold, its text below. */

@@ -112,9 +112,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     val old    = fakeJdk(d, "11.0.2")
     val onPath = Files.createDirectories(d.resolve("bin"))
     Files.createSymbolicLink(onPath.resolve("java"), fakeJdk(d, "19.0.1").resolve("bin/java"))
-    fakeJdk(jdks, "21.0.4")
-    fakeJdk(jdks, "25.0.1")
-    fakeJdk(jdks, "1.8.0_392")
+    List("21.0.4", "25.0.1", "1.8.0_392").foreach(fakeJdk(jdks, _))
     val env = Map(
       "JAVA_HOME"       -> Some(old.toString),
       "PATH"            -> Some(s"$onPath:${sys.env.getOrElse("PATH", "/usr/bin:/bin")}"),

@@ -46,5 +46,5 @@ object Processes:
   /** Deletes `dir` and everything in it, making it writable first. */
   def deleteTree(dir: Path): Unit =
     if Files.exists(dir) then
-      run(Seq("chmod", "-R", "u+w", dir.toString), Path.of("/"))
+      run(Seq("chmod", "-R", "u+w", dir.toString), Path.of("/")): Unit // then delete what it can
       Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
