@@ -57,8 +57,8 @@ lazy val root = project
     Test / baseDirectory := (ThisBuild / baseDirectory).value,
     Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
-    // The system tests run the real launcher, which needs the assembled jar.
-    Test / test               := (Test / test).dependsOn(assembly).value,
+    // The system tests run the real launcher, which needs the assembled jar, and the release.
+    Test / test               := (Test / test).dependsOn(assembly, dist).value,
     console / initialCommands := "import tracer.math.*, tracer.image.*, tracer.io.*, " +
       "tracer.geometry.*, tracer.scene.*, tracer.render.*",
     Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
@@ -137,3 +137,96 @@ movie := {
     dir / name
   }
 }
+
+// `./sbt dist` (the course's `ant dist`): the release, in target/dist/: tracer-<version>.tar.gz,
+// which unpacks to tracer-<version>/ (bin/tracer, lib/ with the jar and the launcher, scenes/,
+// docs/, README.md, LICENSE), and tracer_<version>_all.deb, the same files installed under
+// /usr/share/tracer with `tracer` on PATH, `man tracer` and the docs in /usr/share/doc/tracer
+// (docs/install.md). Both ship root's assembled jar, whatever other modules the build has.
+// (`dist` is sbt-native-packager's key, here set for the whole build: it returns target/dist.)
+dist := {
+  val tarball = (launcher / Universal / packageZipTarball).value
+  val deb     = (launcher / Debian / packageBin).value
+  val dir     = (ThisBuild / baseDirectory).value / "target" / "dist"
+  val v       = version.value
+  val out     = Seq(tarball -> dir / s"tracer-$v.tar.gz", deb -> dir / s"tracer_${v}_all.deb")
+  IO.delete(dir)
+  out.foreach { case (from, to) => IO.copyFile(from, to) }
+  streams.value.log.info(s"wrote ${out.map(_._2).mkString(" and ")}")
+  dir
+}
+
+// The packaging of the release: the launcher (launcher/), the jar, and the files beside them.
+lazy val launcher = project
+  .in(file("launcher"))
+  .enablePlugins(UniversalPlugin, DebianPlugin)
+  .settings(
+    name                          := "tracer-launcher",
+    publish / skip                := true,
+    packageName                   := "tracer",
+    Universal / packageName       := s"tracer-${version.value}",
+    Universal / topLevelDirectory := Some(s"tracer-${version.value}"),
+    Universal / mappings          := {
+      val base = (ThisBuild / baseDirectory).value
+      val dir  = baseDirectory.value
+      def tree(from: File, to: String, keep: String => Boolean = _ => true) =
+        (from ** "*").get.filter(_.isFile).flatMap { f =>
+          IO.relativize(from, f).filter(keep).map(path => f -> s"$to/$path")
+        }
+      Seq(
+        (root / assembly).value -> "lib/tracer.jar",
+        dir / "launcher.sh"     -> "lib/launcher.sh",
+        dir / "tracer"          -> "bin/tracer",
+        base / "README.md"      -> "README.md",
+        base / "LICENSE"        -> "LICENSE"
+      ) ++ tree(dir / "training", "lib/training") ++ tree(base / "docs", "docs") ++
+        tree(base / "scenes", "scenes", path => !path.startsWith("bench/")) // generated
+    },
+    maintainer         := "The tracer authors <tracer@localhost>",
+    packageSummary     := "a Whitted ray tracer: renders XML scenes to PNG or PPM",
+    packageDescription := "tracer renders scenes written in a small XML format " +
+      "(spheres, planes, triangles, OBJ meshes, textures, reflection, refraction, area lights) " +
+      "to PNG or PPM pictures, one frame or a batch of frames in one process.",
+    Debian / packageArchitecture       := "all",
+    Debian / debianPackageDependencies := Seq(
+      "default-jre-headless (>= 2:1.17) | java17-runtime-headless | java-runtime-headless (>= 17)"
+    ),
+    Debian / linuxPackageMappings := {
+      val usr = "/usr/share/tracer"
+      val doc = "/usr/share/doc/tracer"
+      // README.md and docs/ keep their places relative to each other, so that links still work;
+      // the licence is Debian's copyright file.
+      val files = (Universal / mappings).value.collect {
+        case (f, path) if path == "README.md" || path.startsWith("docs/") => f -> s"$doc/$path"
+        case (f, path) if path != "LICENSE"                               => f -> s"$usr/$path"
+      }
+      val executable = Set(s"$usr/bin/tracer")
+      val base       = (ThisBuild / baseDirectory).value
+      Seq(
+        packageMapping(files.filter(m => executable(m._2)): _*).withPerms("0755"),
+        packageMapping(files.filterNot(m => executable(m._2)): _*).withPerms("0644"),
+        packageMapping(base / "LICENSE" -> s"$doc/copyright").withPerms("0644"),
+        packageMapping(manPage.value -> "/usr/share/man/man1/tracer.1.gz").withPerms("0644")
+      )
+    },
+    Debian / linuxPackageSymlinks += com.typesafe.sbt.packager.linux
+      .LinuxSymlink("/usr/bin/tracer", "/usr/share/tracer/bin/tracer"),
+    // The one maintainer script: the start-up caches that root's runs made beside the jar go
+    // with the package (docs/install.md). No users, groups or services to set up.
+    Debian / maintainerScripts := Map(
+      "prerm" -> Seq("#!/bin/sh", "set -e", "rm -rf /usr/share/tracer/lib/tracer-java*")
+    ),
+    // `man tracer`: made from the usage of `--help` by tracer.cli.ManPage, gzipped.
+    manPage := {
+      val roff = target.value / "tracer.1"
+      val gz   = target.value / "tracer.1.gz"
+      val cp   = (root / Compile / fullClasspath).value.files
+      (root / Compile / runner).value
+        .run("tracer.cli.ManPage", cp, Seq(roff.toString), streams.value.log)
+        .get
+      IO.gzip(roff, gz)
+      gz
+    }
+  )
+
+lazy val manPage = taskKey[File]("Writes `man tracer`, from the usage of --help, gzipped")

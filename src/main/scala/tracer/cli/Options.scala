@@ -83,7 +83,7 @@ object Options:
     else
       (result, errors) match
         case (Some(options), Nil) if options.version =>
-          Command.Version(s"tracer ${BuildInfo.version}")
+          Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
         case (Some(options @ Options(batch = Some(list))), Nil) =>
           if options.output.nonEmpty then
             Command.UsageError(
@@ -100,6 +100,11 @@ object Options:
         case (Some(options), Nil) => Command.Render(options)
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
+
+  /** The Java this process runs on, as `--version`'s second line names it. */
+  private[cli] def javaLine: String =
+    def property(name: String) = sys.props.getOrElse(name, "unknown")
+    s"Java ${property("java.version")} (${property("java.vendor")}) at ${property("java.home")}"
 
   /** The usage text of `--help`. */
   def usage: String = OParser.usage(parser)

@@ -3,7 +3,8 @@ package tracer.cli
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
 import java.util.concurrent.TimeUnit
-import tracer.testkit.Images
+import scala.jdk.CollectionConverters.*
+import tracer.testkit.{Images, Processes}
 
 /** System tests: the real `tracer` launcher script run as a process, as a user would run it.
   *
@@ -63,6 +64,108 @@ class LauncherSuite extends munit.FunSuite with Images:
         resourceImage("/samples/expected/basics-320x240.png"),
         "launcher-basics"
       )
+
+  /** The home of an installed JDK 17, found by its `release` file, if there is one. */
+  private def jdk17: Option[Path] =
+    val dir = Path.of("/usr/lib/jvm")
+    if !Files.isDirectory(dir) then None
+    else
+      Files.list(dir).iterator.asScala.toList.sorted.find { home =>
+        val release = home.resolve("release")
+        Files.isRegularFile(release) && Files.isExecutable(home.resolve("bin/java")) &&
+        Files.readAllLines(release).asScala.exists(_.startsWith("JAVA_VERSION=\"17."))
+      }
+
+  work.test("on JDK 17 (TRACER_JAVA) it renders the sample as expected and names that Java"): d =>
+    assume(jdk17.isDefined, "no JDK 17 in /usr/lib/jvm")
+    jdk17.foreach { home17 =>
+      val env    = Map("TRACER_JAVA" -> Some(home17.toString))
+      val render =
+        Processes.run(Seq(launcher.toString, "-x", "320", "-i", "basics.xml", "b.png"), d, env)
+      assertEquals(render, Processes.Exit(0, "", ""))
+      assertImageClose(
+        readImage(d.resolve("b.png")),
+        resourceImage("/samples/expected/basics-320x240.png"),
+        "launcher-jdk17"
+      )
+      val version = Processes.run(Seq(launcher.toString, "--version"), d, env)
+      assertEquals(version.status, 0, version.err)
+      assert(version.out.linesIterator.toList(1).startsWith("Java 17."), version.out)
+      assert(version.out.contains(s" at ${home17.toRealPath()}"), version.out)
+    }
+
+  /** A stand-in JDK of version `v` in `dir`: a release file and a `java` that prints its name and
+    * its arguments.
+    */
+  private def fakeJdk(dir: Path, v: String): Path =
+    val home = Files.createDirectories(dir.resolve(s"jdk-$v/bin")).getParent
+    Files.writeString(home.resolve("release"), s"IMPLEMENTOR=\"Fake\"\nJAVA_VERSION=\"$v\"\n")
+    val java = home.resolve("bin/java")
+    Files.writeString(java, s"#!/bin/sh\necho \"jdk-$v $$*\"\n")
+    java.toFile.setExecutable(true)
+    home
+
+  work.test(
+    "it takes the newest Java >= 17 of JAVA_HOME, PATH and the JDK directories, or TRACER_JAVA"
+  ): d =>
+    val jdks   = Files.createDirectories(d.resolve("jvm"))
+    val old    = fakeJdk(d, "11.0.2")
+    val onPath = Files.createDirectories(d.resolve("bin"))
+    Files.createSymbolicLink(onPath.resolve("java"), fakeJdk(d, "19.0.1").resolve("bin/java"))
+    List("21.0.4", "25.0.1", "1.8.0_392").foreach(fakeJdk(jdks, _))
+    val env = Map(
+      "JAVA_HOME"       -> Some(old.toString),
+      "PATH"            -> Some(s"$onPath:${sys.env.getOrElse("PATH", "/usr/bin:/bin")}"),
+      "TRACER_JDK_DIRS" -> Some(jdks.toString),
+      "TRACER_JAVA"     -> None,
+      "TRACER_CACHE"    -> Some("off")
+    )
+    def chosen(extra: (String, Option[String])*) =
+      val e = Processes.run(Seq(launcher.toString, "--version"), d, env ++ extra)
+      assertEquals((e.status, e.err), (0, ""))
+      e.out.trim
+    // JDK 23 and newer are told to let Scala's LazyVals use sun.misc.Unsafe without a warning.
+    assertEquals(
+      chosen(),
+      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -jar $jar --version"
+    )
+    assertEquals(
+      chosen("TRACER_JDK_DIRS" -> Some(d.resolve("none").toString)),
+      s"jdk-19.0.1 -Xss8m -XX:+UseSerialGC -jar $jar --version"
+    )
+    assertEquals(
+      chosen("TRACER_JAVA" -> Some(old.toString), "TRACER_JAVA_OPTS" -> Some("-Xmx1g")),
+      s"jdk-11.0.2 -Xmx1g -jar $jar --version"
+    )
+    assertEquals(
+      chosen("TRACER_JAVA" -> Some(old.resolve("bin/java").toString)),
+      s"jdk-11.0.2 -Xss8m -XX:+UseSerialGC -jar $jar --version"
+    )
+
+  work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
+    val old    = fakeJdk(d, "11.0.2")
+    val onPath = Files.createDirectories(d.resolve("bin"))
+    Files.createSymbolicLink(onPath.resolve("java"), old.resolve("bin/java"))
+    val env = Map(
+      "JAVA_HOME"       -> Some(old.toString),
+      "PATH"            -> Some(s"$onPath:${sys.env.getOrElse("PATH", "/usr/bin:/bin")}"),
+      "TRACER_JDK_DIRS" -> Some(d.resolve("none").toString),
+      "TRACER_JAVA"     -> None
+    )
+    val none = Processes.run(Seq(launcher.toString, "--version"), d, env)
+    assertEquals((none.status, none.out), (1, ""))
+    assertEquals(
+      none.err,
+      "tracer: needs Java 17 or newer; found only older ones (set TRACER_JAVA to a newer one)\n"
+    )
+    val bad = Processes.run(
+      Seq(launcher.toString, "--version"),
+      d,
+      env + ("TRACER_JAVA" -> Some(d.resolve("nowhere").toString))
+    )
+    assertEquals((bad.status, bad.out), (1, ""))
+    assert(bad.err.startsWith("tracer: TRACER_JAVA="), bad.err)
+    assertEquals(bad.err.linesIterator.length, 1, bad.err)
 
   work.test("through a symbolic link it still finds its jar"): d =>
     val link = Files.createSymbolicLink(d.resolve("tracer-link"), launcher)

@@ -44,11 +44,15 @@ class MainOptionsSuite extends munit.FunSuite with Images:
       |<sphere radius="1"><centre x="0" y="0" z="0"/><surface phong="0.5"><colour r="1" g="0.5" b="0"/></surface></sphere>
       |</scene>""".stripMargin
 
-  test("--version prints 'tracer VERSION' and nothing else, with or without OUTPUT"):
+  test("--version prints 'tracer VERSION' and the Java it runs on, with or without OUTPUT"):
     for args <- List(List("--version"), List("--version", "out.png")) do
       val r = run(Path.of("."), args*)()
       assertEquals(r.status, 0)
-      assert(r.out.matches("tracer \\d+\\.\\d+\\.\\d+\n"), r.out)
+      val java =
+        s"Java ${System.getProperty("java.version")} (${System.getProperty("java.vendor")}) at " +
+          System.getProperty("java.home")
+      assert(r.out.matches("tracer \\d+\\.\\d+\\.\\d+\n.*\n"), r.out)
+      assertEquals(r.out.linesIterator.drop(1).toList, List(java))
       assertEquals(r.err, "")
 
   for scene <- List("textures.xml", "meshes.xml") do

@@ -1,0 +1,289 @@
+# launcher.sh: the one launcher logic of the tracer, sourced by ./tracer (the source tree) and by
+# bin/tracer (the installed distribution); not run by itself. It chooses the Java to run, keeps
+# the start-up cache for that Java and the jar, and starts the tracer (docs/install.md, "How the
+# launcher starts Java", tells the same for users).
+#
+#   tracer_launch JAR TRAINING_DIR... -- ARGS...
+#
+# JAR is the tracer's jar. Every *.xml in the TRAINING_DIRs is a scene of the cache's training run.
+#
+# Environment:
+#   TRACER_JAVA       the Java to run: a `java` program or the home directory of a JDK or JRE;
+#                     when unset the launcher chooses (tracer_choose_java)
+#   TRACER_JAVA_OPTS  the JVM's options, replacing the default "-Xss8m -XX:+UseSerialGC"
+#   TRACER_CACHE      "off": no start-up cache; "cds": an AppCDS archive even on JDK 25 or newer
+#                     (for comparisons); anything else (or unset): the cache below
+#   TRACER_JDK_DIRS   where installed JDKs are looked for (default "/usr/lib/jvm"), a list
+#                     separated by ':'
+# shellcheck shell=bash
+
+# The oldest Java the tracer runs on (the jar's class files are Java 17's).
+readonly tracer_min_java=17
+
+# tracer_release_version HOME: prints JAVA_VERSION from the JDK's HOME/release file (e.g. 25.0.3),
+# or fails when there is none. Reads the file in the shell: no process is started.
+tracer_release_version() {
+  local line
+  [ -r "$1/release" ] || return 1
+  while IFS= read -r line || [ -n "$line" ]; do
+    case "$line" in
+      JAVA_VERSION=*)
+        line=${line#JAVA_VERSION=}
+        line=${line//\"/}
+        [ -n "$line" ] || return 1
+        printf '%s\n' "$line"
+        return 0
+        ;;
+    esac
+  done <"$1/release"
+  return 1
+}
+
+# tracer_feature VERSION: the feature release of a Java version string (17.0.15 -> 17,
+# 25 -> 25, 25-ea -> 25, 1.8.0_392 -> 8); 0 when it is not a version.
+tracer_feature() {
+  local v=$1 major
+  case "$v" in 1.*) v=${v#1.} ;; esac
+  major=${v%%[!0-9]*}
+  printf '%s\n' "${major:-0}"
+}
+
+# tracer_choose_java: sets tracer_java (the java program to run), tracer_java_home,
+# tracer_java_version (empty when unknown) and tracer_java_feature (0 when unknown).
+#
+# TRACER_JAVA wins when set. Otherwise the candidates are, in this order, JAVA_HOME, the `java` on
+# PATH and every JDK in TRACER_JDK_DIRS (default /usr/lib/jvm, where Linux distributions put
+# them); the newest feature release of at least 17 wins, and among equals the earlier candidate
+# (so JAVA_HOME, then PATH, keep their say). A version is read from the JDK's `release` file. A
+# Java without one is taken only when no candidate of a known version qualifies. Fails with one
+# line on stderr when no Java is found or only ones older than 17.
+tracer_choose_java() {
+  local candidates=() dirs dir entry found
+  tracer_java='' tracer_java_home='' tracer_java_version='' tracer_java_feature=0
+  if [ -n "${TRACER_JAVA:-}" ]; then
+    entry=$TRACER_JAVA
+    if [ -d "$entry" ]; then entry=$entry/bin/java; fi
+    if [ ! -x "$entry" ]; then
+      echo "tracer: TRACER_JAVA='$TRACER_JAVA' is not a java program or a Java home" >&2
+      return 1
+    fi
+    tracer_take_java "$entry"
+    return 0
+  fi
+  if [ -n "${JAVA_HOME:-}" ] && [ -x "$JAVA_HOME/bin/java" ]; then candidates+=("$JAVA_HOME/bin/java"); fi
+  if found=$(command -v java 2>/dev/null) && [ -n "$found" ]; then candidates+=("$found"); fi
+  IFS=: read -r -a dirs <<<"${TRACER_JDK_DIRS:-/usr/lib/jvm}"
+  for dir in ${dirs[@]+"${dirs[@]}"}; do
+    for entry in "$dir"/*/bin/java; do
+      if [ -x "$entry" ]; then candidates+=("$entry"); fi
+    done
+  done
+  if [ ${#candidates[@]} -eq 0 ]; then
+    echo "tracer: no Java found: install a Java runtime of version $tracer_min_java or newer, or set TRACER_JAVA" >&2
+    return 1
+  fi
+  local real=() best='' best_feature=0 unknown='' i home version feature line
+  # One readlink for all: each candidate's real path, where its release file is.
+  while IFS= read -r line; do real+=("$line"); done < <(readlink -f -- "${candidates[@]}" 2>/dev/null)
+  for i in "${!candidates[@]}"; do
+    home=${real[$i]:-${candidates[$i]}}
+    home=${home%/bin/java}
+    if version=$(tracer_release_version "$home"); then
+      feature=$(tracer_feature "$version")
+      if [ "$feature" -ge "$tracer_min_java" ] && [ "$feature" -gt "$best_feature" ]; then
+        best=${candidates[$i]} best_feature=$feature
+      fi
+    elif [ -z "$unknown" ]; then
+      unknown=${candidates[$i]}
+    fi
+  done
+  if [ -n "$best" ]; then
+    tracer_take_java "$best"
+  elif [ -n "$unknown" ]; then
+    tracer_take_java "$unknown"
+  else
+    echo "tracer: needs Java $tracer_min_java or newer; found only older ones (set TRACER_JAVA to a newer one)" >&2
+    return 1
+  fi
+}
+
+# tracer_take_java JAVA: sets tracer_java and what is known of its version.
+tracer_take_java() {
+  local real
+  tracer_java=$1
+  real=$(readlink -f -- "$1" 2>/dev/null) || real=$1
+  tracer_java_home=${real%/bin/java}
+  if tracer_java_version=$(tracer_release_version "$tracer_java_home"); then
+    tracer_java_feature=$(tracer_feature "$tracer_java_version")
+  else
+    tracer_java_version='' tracer_java_feature=0
+  fi
+}
+
+# tracer_java_flags: sets tracer_flags, the options every start of this Java needs besides
+# TRACER_JAVA_OPTS: on JDK 23 and newer, leave Scala's LazyVals its sun.misc.Unsafe without a
+# warning (older JDKs refuse the option, and 17 to 22 do not warn).
+tracer_java_flags() {
+  tracer_flags=()
+  if [ "$tracer_java_feature" -ge 23 ]; then tracer_flags+=(--sun-misc-unsafe-memory-access=allow); fi
+}
+
+# tracer_cksum TEXT: a short stable number for TEXT (POSIX cksum), for file names.
+tracer_cksum() {
+  local sum
+  sum=$(printf '%s' "$1" | cksum)
+  printf '%s\n' "${sum%% *}"
+}
+
+# tracer_cache_dirs JAR: prints the directories where the cache may live, best first: beside the
+# jar, then the user's cache directory (XDG_CACHE_HOME, else ~/.cache), under a name of its own
+# for each installed jar.
+tracer_cache_dirs() {
+  local jar_dir user
+  jar_dir=$(cd -P "$(dirname "$1")" && pwd) || return 0
+  printf '%s\n' "$jar_dir"
+  user=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
+  if [ -n "$user" ]; then printf '%s\n' "$user/tracer/jar-$(tracer_cksum "$jar_dir/$(basename "$1")")"; fi
+}
+
+# tracer_cache JAR TRAINING_DIR...: sets tracer_cache_flags, the JVM options that use the
+# start-up cache for this Java, these JVM options and this jar, making the cache first when it is
+# missing. On JDK 25 and newer the cache is an AOT cache (JEP 483/514/515: classes loaded and
+# linked, and method profiles, from a training run); on 17 to 24 an AppCDS archive of the
+# classes the training run loaded. Its file name holds what it depends on (the Java's version
+# and path, the JVM's options, the jar's size and time), so a changed jar or Java finds no file
+# and makes a new one, and the old one of that Java is deleted. A cache that cannot be made is
+# remembered (a .failed file of the same name), so a failing training run is not repeated on
+# every start. Nothing here ever stops a render: on any failure the flags stay empty, and the
+# JVM is told to use a cache only if it can (-Xshare:auto, AOTMode auto) and to say nothing.
+tracer_cache() {
+  local jar=$1
+  shift
+  tracer_cache_flags=()
+  [ "${TRACER_CACHE:-auto}" != off ] || return 0
+  [ "$tracer_java_feature" -ge "$tracer_min_java" ] || return 0
+  local kind=jsa
+  if [ "$tracer_java_feature" -ge 25 ] && [ "${TRACER_CACHE:-auto}" != cds ]; then kind=aot; fi
+  local stamp key name dir file
+  stamp=$(stat -L -c '%s-%Y' -- "$jar" 2>/dev/null) || return 0
+  key=$(tracer_cksum "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}")
+  name="tracer-java$tracer_java_version-$key-jar$stamp.$kind"
+  local dirs=() line
+  while IFS= read -r line; do dirs+=("$line"); done < <(tracer_cache_dirs "$jar")
+  # A cache already made in any of the places is used as it is.
+  for dir in ${dirs[@]+"${dirs[@]}"}; do
+    if [ -f "$dir/$name" ]; then
+      tracer_cache_use "$kind" "$dir/$name"
+      return 0
+    fi
+  done
+  # Else it is made in the first place that can take it, unless it failed there before.
+  for dir in ${dirs[@]+"${dirs[@]}"}; do
+    if [ -f "$dir/$name.failed" ]; then return 0; fi
+    if { [ -d "$dir" ] || mkdir -p -- "$dir" 2>/dev/null; } && [ -w "$dir" ]; then
+      file=$dir/$name
+      tracer_cache_make "$kind" "$jar" "$file" "$@" || true
+      if [ -f "$file" ]; then tracer_cache_use "$kind" "$file"; fi
+      return 0
+    fi
+  done
+}
+
+# tracer_cache_use KIND FILE: sets tracer_cache_flags to use FILE quietly, if it can be used.
+tracer_cache_use() {
+  if [ "$1" = aot ]; then
+    tracer_cache_flags=(-XX:AOTCache="$2" -Xlog:aot=off -Xlog:cds=off)
+  else
+    tracer_cache_flags=(-XX:SharedArchiveFile="$2" -Xshare:auto -Xlog:cds=off -Xlog:cds+dynamic=off)
+  fi
+}
+
+# tracer_cache_make KIND JAR FILE TRAINING_DIR...: the training run: renders every training scene
+# small in one process (tracer --batch), the way users' renders run, then writes the cache to
+# FILE. One process at a time makes a given cache (a lock directory beside it; the others go on
+# without one); the file appears whole or not at all.
+tracer_cache_make() {
+  local kind=$1 jar=$2 file=$3
+  shift 3
+  local lock=$file.lock
+  if ! mkdir -- "$lock" 2>/dev/null; then
+    # Another process is making it; a lock older than 10 minutes was left by one that died.
+    if [ -n "$(find "$lock" -maxdepth 0 -mmin +10 2>/dev/null)" ]; then
+      rmdir -- "$lock" 2>/dev/null || true
+    fi
+    return 1
+  fi
+  local work status=0
+  work=$(mktemp -d "${TMPDIR:-/tmp}/tracer-training.XXXXXX") || {
+    rmdir -- "$lock"
+    return 1
+  }
+  tracer_training_list "$work" "$@" >"$work/list" || status=1
+  # Older caches of this Java (another jar, other options) in this place are of no more use.
+  rm -f -- "${file%-jar*}"-jar*."$kind"
+  if [ "$status" = 0 ]; then
+    if [ "$kind" = aot ]; then
+      # JEP 514: the training run writes the cache when it exits (a second JVM assembles it).
+      "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
+        -XX:AOTCacheOutput="$work/cache.aot" -Xlog:aot=off -Xlog:cds=off \
+        -jar "$jar" -x 320 -p 2 --batch "$work/list" >/dev/null 2>&1 &&
+        [ -s "$work/cache.aot" ] && mv -f -- "$work/cache.aot" "$file.partial" || status=1
+    else
+      "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
+        -XX:DumpLoadedClassList="$work/classes" \
+        -jar "$jar" -x 64 -p 2 --batch "$work/list" >/dev/null 2>&1 &&
+        "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
+          -Xshare:dump -XX:SharedClassListFile="$work/classes" \
+          -XX:SharedArchiveFile="$file.partial" -Xlog:cds=off -Xlog:cds+dynamic=off \
+          -cp "$jar" >/dev/null 2>&1 && [ -s "$file.partial" ] || status=1
+    fi
+  fi
+  if [ "$status" = 0 ]; then
+    mv -f -- "$file.partial" "$file" || status=1
+  fi
+  if [ "$status" != 0 ]; then
+    rm -f -- "$file.partial"
+    : >"$file.failed" 2>/dev/null || true
+  fi
+  rm -rf -- "$work"
+  rmdir -- "$lock" 2>/dev/null || true
+  return "$status"
+}
+
+# tracer_training_list WORK TRAINING_DIR...: prints the training run's batch list: every *.xml of
+# the TRAINING_DIRs, each to a picture in WORK.
+tracer_training_list() {
+  local work=$1 dir scene n=0
+  shift
+  for dir in "$@"; do
+    for scene in "$dir"/*.xml; do
+      if [ -f "$scene" ]; then
+        n=$((n + 1))
+        printf '%s\t%s\n' "$scene" "$work/frame-$n.png"
+      fi
+    done
+  done
+  [ "$n" -gt 0 ]
+}
+
+# tracer_launch JAR TRAINING_DIR... -- ARGS...: chooses the Java, prepares its cache and replaces
+# this shell with the tracer.
+tracer_launch() {
+  local jar=$1 training=()
+  shift
+  while [ $# -gt 0 ] && [ "$1" != -- ]; do
+    training+=("$1")
+    shift
+  done
+  if [ $# -gt 0 ]; then shift; fi
+  tracer_choose_java || exit 1
+  tracer_java_flags
+  # The JVM's options: the serial collector, because renders make short-lived garbage fast and on
+  # a small machine the serial young collection clears it as quickly as G1 or ParallelGC while
+  # keeping the heap (and so the resident memory) small: a 3840x2160 render peaks at 344 MB
+  # instead of 1.1 GB (docs/performance.md). TRACER_JAVA_OPTS replaces them.
+  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC}"
+  tracer_cache "$jar" ${training[@]+"${training[@]}"}
+  exec "$tracer_java" ${tracer_cache_flags[@]+"${tracer_cache_flags[@]}"} \
+    ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" -jar "$jar" "$@"
+}
