@@ -1,8 +1,8 @@
 package tracer.render
 
 import tracer.image.Colour
-import tracer.geometry.{Plane, Sphere}
-import tracer.math.Vec3
+import tracer.geometry.*
+import tracer.math.{Placement, Vec3}
 import tracer.scene.*
 import tracer.testkit.Scenes.{camera, matte}
 
@@ -32,6 +32,43 @@ class DeterminismSuite extends munit.FunSuite:
       Surface(0.1, 0.1, transmit = 0.9, ior = 1.5, phong = 0.8, specular = 0.3)
     )
   )
+
+  // Version 3, built in code as in the REPL: a glass difference with a cut face of its own, a
+  // placed torus with a checker, and a cylinder.
+  private val solid = scene.copy(
+    objects = scene.objects ++ List(
+      SceneObject(
+        Placed(
+          Csg(
+            CsgOperation.Difference,
+            Vector(Box(Vec3(-0.5, -0.5, -0.5), Vec3(0.5, 0.5, 0.5)), Sphere(Vec3.Zero, 0.65))
+          ),
+          Placement(rotate = Vec3(20, 35, 0), translate = Vec3(0.9, 0.2, -1.2))
+        ),
+        Surface(0.2, 0.1, transmit = 0.8, ior = 1.4),
+        Vector(
+          Surface(0.2, 0.1, transmit = 0.8, ior = 1.4),
+          Surface(0.9, pigment = Pigment.Solid(Colour(0.2, 0.4, 0.9)))
+        )
+      ),
+      SceneObject(
+        Placed(
+          Torus(0.5, 0.15),
+          Placement(rotate = Vec3(70, 0, 0), translate = Vec3(-1.2, 0.3, -1))
+        ),
+        Surface(0.8, pigment = Pigment.Checker(Colour.White, Colour(0.8, 0.1, 0.1), 0.2))
+      ),
+      SceneObject(
+        Cylinder(Vec3(0, -1, 1.5), Vec3(0.3, 0.8, 1.5), 0.25),
+        Surface(0.8, 0.2, phong = 0.5)
+      )
+    )
+  )
+
+  test("a version 3 scene (solids, placement, a glass CSG, a checker) too"):
+    val expected = Renderer.renderSequential(solid, config)
+    for threads <- List(1, 2, 3, 8) do
+      assertEquals(Renderer.render(solid, config, threads), expected, s"$threads threads")
 
   test("1, 2, 3 and 8 threads give the same bitmap as the sequential renderer"):
     val expected = Renderer.renderSequential(scene, config)
