@@ -100,7 +100,33 @@ class GallerySuite extends munit.FunSuite with Images:
       "area",
       "area@samples-a",
       "area@samples-b",
-      "mesh@smooth"
+      "mesh@smooth",
+      // Version 3.
+      "box",
+      "box@scale",
+      "corner1",
+      "corner2",
+      "cylinder",
+      "cylinder@radius",
+      "cylinder@open",
+      "cylinder@scale",
+      "cone",
+      "cone@base-radius",
+      "cone@cap-radius",
+      "cone@scale",
+      "base",
+      "cap",
+      "torus",
+      "torus@major",
+      "torus@minor",
+      "torus@scale",
+      "union",
+      "union@scale",
+      "intersection",
+      "difference",
+      "difference@scale",
+      "checker",
+      "checker@size"
     )
     assertEquals(format -- used, Set.empty[String])
 
