@@ -73,9 +73,9 @@ private[io] object XmlDocument:
       reader.parse(source)
       visitor.end()
     catch
-      case Stop(error)                            => Left(error)
-      case Stopped(error)                         => Left(error)
-      case e: SAXParseException                   =>
+      case Stop(error)          => Left(error)
+      case Stopped(error)       => Left(error)
+      case e: SAXParseException =>
         val line    = Option(e.getLineNumber).filter(_ > 0)
         val text    = Option(e.getMessage).getOrElse("malformed XML")
         val message =
@@ -130,10 +130,10 @@ private[io] object XmlDocument:
         val attributes: Map[String, String],
         val line: Option[Int]
     ):
-      val children                 = ListBuffer.empty[Element]
-      var stray: Option[StrayText] = None
+      val children                    = ListBuffer.empty[Element]
+      var stray: Option[StrayText]    = None
       var text: Option[StringBuilder] = None // the stray text being gathered, from its first letter
-      var textLine: Option[Int]    = None
+      var textLine: Option[Int]       = None
 
     override def setDocumentLocator(l: Locator): Unit = locator = Some(l)
 
