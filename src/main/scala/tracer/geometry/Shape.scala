@@ -32,10 +32,12 @@ final case class Sphere(
 
   /** The unit pole Sp. */
   val unitPole: Vec3 =
+    // Why: a broken invariant, as with require: the scene reader rejects a zero vector first.
     pole.normalised.getOrElse(throw IllegalArgumentException("the pole is the zero vector"))
 
   /** The unit equator Se. */
   val unitEquator: Vec3 =
+    // Why: a broken invariant, as with require: the scene reader rejects a zero vector first.
     equator.normalised.getOrElse(throw IllegalArgumentException("the equator is the zero vector"))
   require(
     Math.abs(unitPole.dot(unitEquator)) <= Sphere.RightAngleTolerance,
@@ -72,6 +74,7 @@ object Plane:
   def at(normal: Vec3, distance: Double): Plane = Plane(unit(normal), distance)
 
   private def unit(normal: Vec3): Vec3 =
+    // Why: a broken invariant, as with require: the scene reader rejects a zero normal first.
     normal.normalised.getOrElse(
       throw IllegalArgumentException("a plane's normal is the zero vector")
     )
@@ -103,6 +106,8 @@ final case class Triangle(
     .cross(b)
     .normalised
     .getOrElse(
+      // Why: a broken invariant, as with require: the scene and OBJ readers check
+      // Triangle.isProper first.
       throw IllegalArgumentException(s"the corners $t0, $t1, $t2 are collinear")
     )
 

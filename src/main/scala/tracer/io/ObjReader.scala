@@ -4,6 +4,7 @@ import java.io.{BufferedReader, IOException}
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, NoSuchFileException, Path}
 import scala.collection.mutable
+import scala.util.control.NoStackTrace
 import tracer.geometry.SurfaceCoordinates
 import tracer.math.Vec3
 
@@ -59,12 +60,13 @@ private final class ObjParser(reader: BufferedReader, name: String):
   private val triangles    = Vector.newBuilder[ObjTriangle]
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
-  // The current line and its words: word k is line(starts(k) until ends(k)); grown as needed.
+  // Perf: the current line and its words: word k is line(starts(k) until ends(k)); the arrays
+  // are reused for every line and grown as needed, so a line allocates no list of words.
   private var line   = ""
   private var count  = 0
   private var starts = new Array[Int](16)
   private var ends   = new Array[Int](16)
-  // A face's corners, grown as needed.
+  // Perf: a face's corners, reused for every face and grown as needed.
   private var cornerV = new Array[Int](8)
   private var cornerT = new Array[Int](8)
   private var cornerN = new Array[Int](8)
@@ -72,8 +74,10 @@ private final class ObjParser(reader: BufferedReader, name: String):
   /** Reads every line: the mesh, or the first error with its line. */
   def run(): Either[String, ObjMesh] =
     try
+      // Why: readLine's loop, the one way to read lines that keeps IOException as it is (lines()
+      // wraps it); null is its end of input.
       var next = reader.readLine()
-      while next != null do
+      while next != null do // nosemgrep: no-null — BufferedReader.readLine's end of input
         lineNumber += 1
         line = next
         split()
@@ -113,6 +117,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
     if cornerV.length < corners then
       cornerV = new Array[Int](2 * corners); cornerT = new Array[Int](2 * corners)
       cornerN = new Array[Int](2 * corners)
+    // Perf: a counted loop over the corners, no Range or closure per face.
     var k = 0
     while k < corners do
       corner(k, starts(k + 1), ends(k + 1))
@@ -121,6 +126,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
 
   /** Corner k of a face, written at line(from until to) as v, v/vt, v//vn or v/vt/vn. */
   private def corner(k: Int, from: Int, to: Int): Unit =
+    // Perf: one scan for the slashes in place, instead of a split into substrings per corner.
     var slash1  = to
     var slash2  = to
     var slashes = 0
@@ -142,6 +148,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
 
   /** The triangles (v0, vi, vi+1) of a polygon of `corners` corners. */
   private def fan(corners: Int): Unit =
+    // Perf: counted loops over the corner arrays, no Range or closure per face.
     var textured = true
     var normed   = true
     var k        = 0
@@ -198,6 +205,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
       case -1 => line.length
       case i  => i
     count = 0
+    // Perf: the words found as index ranges in place, with no substring or array per word.
     var i = 0
     while i < end do
       while i < end && Character.isWhitespace(line.charAt(i)) do i += 1
@@ -212,10 +220,12 @@ private final class ObjParser(reader: BufferedReader, name: String):
         count += 1
 
   private def fail(message: String): Nothing =
+    // Why: unwinds the parser to run(), which turns it into a Left; it never leaves this file.
     throw ObjParser.Malformed(s"$name line $lineNumber: $message")
 
 /** A growable array of unboxed doubles. */
 private final class DoubleBuffer:
+  // Perf: unboxed storage, grown by doubling (an ArrayBuffer[Double] boxes every element).
   private var data = new Array[Double](1024)
   private var size = 0
 
@@ -230,4 +240,4 @@ private final class DoubleBuffer:
 
 private object ObjParser:
   /** The parser's internal signal; it never escapes [[ObjParser.run]]. */
-  final case class Malformed(message: String) extends Exception(message, null, false, false)
+  final case class Malformed(message: String) extends Exception(message) with NoStackTrace

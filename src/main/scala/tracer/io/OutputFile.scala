@@ -33,7 +33,8 @@ object OutputFile:
     */
   def write(path: Path)(write: OutputStream => Unit): Either[String, Unit] =
     checkWritable(path).flatMap { _ =>
-      val target                  = path.toAbsolutePath
+      val target = path.toAbsolutePath
+      // Why: the temporary file while it exists, shared with the shutdown hook that removes it.
       var temporary: Option[Path] = None
       // A kill (SIGTERM, Ctrl-C) between creation and the rename still removes the temporary file.
       val cleanup = Thread(() => temporary.foreach(Files.deleteIfExists))

@@ -5,6 +5,7 @@ import javax.xml.parsers.SAXParserFactory
 import org.xml.sax.helpers.DefaultHandler
 import org.xml.sax.{Attributes, InputSource, Locator, SAXException, SAXParseException}
 import scala.collection.mutable.ListBuffer
+import scala.util.control.NoStackTrace
 
 /** One element of a scene document, as much of it as the scene reader needs.
   *
@@ -72,9 +73,9 @@ private[io] object XmlDocument:
       reader.parse(source)
       visitor.end()
     catch
-      case Stop(error)                            => Left(error)
-      case e: SAXException if stopped(e).nonEmpty => Left(stopped(e).get)
-      case e: SAXParseException                   =>
+      case Stop(error)          => Left(error)
+      case Stopped(error)       => Left(error)
+      case e: SAXParseException =>
         val line    = Option(e.getLineNumber).filter(_ > 0)
         val text    = Option(e.getMessage).getOrElse("malformed XML")
         val message =
@@ -99,13 +100,17 @@ private[io] object XmlDocument:
   /** The visitor's error, when the parser wrapped the [[Stop]] that carried it. */
   private def stopped(e: Throwable): Option[SceneError] =
     Iterator
-      .iterate[Throwable](e)(t => t.getCause)
-      .takeWhile(_ != null)
+      .unfold[Throwable, Option[Throwable]](Some(e))(_.map(t => (t, Option(t.getCause))))
       .take(10)
       .collectFirst { case Stop(error) => error }
 
+  /** A SAX exception that wrapped a [[Stop]]: the visitor's error it carried. */
+  private object Stopped:
+    /** The visitor's error inside `e`, if `e` wrapped a [[Stop]]. */
+    def unapply(e: SAXException): Option[SceneError] = stopped(e)
+
   /** Carries the visitor's error out of the parser's callbacks. */
-  private final case class Stop(error: SceneError) extends Exception(null, null, false, false)
+  private final case class Stop(error: SceneError) extends Exception with NoStackTrace
 
   /** The most of a stray text kept for its message. */
   private val StrayTextKept = 64
@@ -125,10 +130,10 @@ private[io] object XmlDocument:
         val attributes: Map[String, String],
         val line: Option[Int]
     ):
-      val children                 = ListBuffer.empty[Element]
-      var stray: Option[StrayText] = None
-      var text: StringBuilder      = null // the stray text being gathered, from its first letter
-      var textLine: Option[Int]    = None
+      val children                    = ListBuffer.empty[Element]
+      var stray: Option[StrayText]    = None
+      var text: Option[StringBuilder] = None // the stray text being gathered, from its first letter
+      var textLine: Option[Int]       = None
 
     override def setDocumentLocator(l: Locator): Unit = locator = Some(l)
 
@@ -162,24 +167,29 @@ private[io] object XmlDocument:
     override def characters(ch: Array[Char], start: Int, length: Int): Unit =
       open.headOption.filter(_.stray.isEmpty).foreach { element =>
         val end = start + length
-        if element.text == null then
-          var i = start
-          while i < end && Character.isWhitespace(ch(i)) do i += 1
-          if i < end then
-            element.text = StringBuilder()
-            element.textLine = locator.map(_.getLineNumber - (i until end).count(ch(_) == '\n'))
-            element.text.appendAll(ch, i, Math.min(end - i, StrayTextKept))
-        else if element.text.length < StrayTextKept then
-          element.text.appendAll(ch, start, Math.min(length, StrayTextKept - element.text.length))
+        element.text match
+          case None =>
+            var i = start
+            while i < end && Character.isWhitespace(ch(i)) do i += 1
+            if i < end then
+              val text = StringBuilder()
+              element.text = Some(text)
+              element.textLine = locator.map(_.getLineNumber - (i until end).count(ch(_) == '\n'))
+              text.appendAll(ch, i, Math.min(end - i, StrayTextKept))
+          case Some(text) =>
+            if text.length < StrayTextKept then
+              text.appendAll(ch, start, Math.min(length, StrayTextKept - text.length))
       }
 
     /** Ends the text gathered since the last tag: the first such text is the element's stray text. */
     private def settleText(): Unit =
-      open.headOption.filter(_.text != null).foreach { element =>
-        val stray = StrayText(element.text.toString.trim, element.textLine.filter(_ > 0))
-        element.text = null
-        element.stray = Some(stray)
-        if open.tail.isEmpty then check(visitor.rootText(stray))
+      open.headOption.foreach { element =>
+        element.text.foreach { text =>
+          val stray = StrayText(text.toString.trim, element.textLine.filter(_ > 0))
+          element.text = None
+          element.stray = Some(stray)
+          if open.tail.isEmpty then check(visitor.rootText(stray))
+        }
       }
 
     private def check(result: Either[SceneError, Unit]): Unit =

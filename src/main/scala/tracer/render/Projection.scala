@@ -8,11 +8,12 @@ import tracer.scene.Camera
   * (course text, section 4, equations 8–16).
   */
 final class Projection(camera: Camera, config: CameraConfig):
-  // Equation 10: the viewing direction c.
-  private val forward = (camera.lookAt - camera.location).normalised.get
+  // Equation 10: the viewing direction c. Camera's requires (location ≠ lookat, up not parallel
+  // to the viewing direction) make it and the next two normalisable: no fallback is ever used.
+  private val forward = (camera.lookAt - camera.location).normalisedOr(Vec3.UnitZ)
   // Equations 11–12: the picture's right and down directions Cr and Cd.
-  private val right = camera.up.cross(forward).normalised.get
-  private val down  = right.cross(forward).normalised.get
+  private val right = camera.up.cross(forward).normalisedOr(Vec3.UnitX)
+  private val down  = right.cross(forward).normalisedOr(Vec3.UnitY)
   // Equation 13: the upper left corner Cc of the image plane.
   private val corner =
     camera.location + forward * config.zoom - right * (config.width / 2) - down * (config.height / 2)

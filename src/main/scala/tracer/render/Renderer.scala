@@ -41,6 +41,7 @@ object Renderer:
         }
         Await.result(done, Duration.Inf)
       }
+    // Why: rethrows the fatal error a row task carried out (RowFailure), as on this thread.
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow()
 
@@ -104,5 +105,6 @@ private final case class RowFailure(cause: Throwable) extends Exception(cause)
 private object RowFailure:
   /** Runs `body`, turning a fatal JVM error into a [[RowFailure]] the Future can carry. */
   inline def guard[A](inline body: A): A =
+    // Why: a Future never completes on a fatal error; wrapped, the error fails it instead.
     try body
     catch case e: VirtualMachineError => throw RowFailure(e)

@@ -23,7 +23,8 @@ final class Shadows(world: World, query: Query):
   // (x, y, z at 3(u·samplesB + v)), so a sample makes no Vec3 or Ray (docs/performance.md, round 4).
   private val subLights: IArray[Array[Double]] =
     world.lights.map(l => l.area.fold(Array.emptyDoubleArray)(Shadows.positions(l.location, _)))
-  // The positions for a light not of this world (tests), made on demand.
+  // Why: the positions for a light not of this world (tests), made on demand and kept for the
+  // next shading point that asks for the same light.
   private var strayLight: Option[AreaLight] = None
   private var strayCentre                   = Vec3.Zero
   private var strayPositions                = Array.emptyDoubleArray
@@ -48,6 +49,8 @@ final class Shadows(world: World, query: Query):
 
   /** The sub-light positions of the area light `light` centred at `centre`. */
   private def positionsOf(centre: Vec3, light: AreaLight): Array[Double] =
+    // Perf: a plain search of the lights, once per area-light shadow test: indexWhere would
+    // allocate a closure (capturing light and centre) for each.
     var k     = 0
     var found = -1
     while found < 0 && k < world.lights.length do
@@ -115,7 +118,8 @@ final class Shadows(world: World, query: Query):
     * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
     */
   private def transmittance(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
-    // Mutable walk state: the origin moves past each surface crossed.
+    // Perf: the walk's state in local doubles, no Vec3 or Ray per step: the origin moves past
+    // each surface crossed.
     var ox    = from.x
     var oy    = from.y
     var oz    = from.z
