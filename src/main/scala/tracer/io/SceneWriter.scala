@@ -62,14 +62,13 @@ object SceneWriter:
       enclosing: List[Placement],
       look: Either[Surface, Surface]
   ): String =
-    val space                         = (placement :: enclosing).filterNot(_.isIdentity)
-    def carried(own: Option[Surface]) = look match
+    def carried(own: Option[Surface], look: Either[Surface, Surface] = look) = look match
       case Right(top)      => (Some(top), top)
       case Left(inherited) =>
         val mine = own.filter(_ != inherited)
         (mine.map(_.copy(ior = Surface().ior)), own.getOrElse(inherited))
-    def element(own: Option[Surface]) =
-      val (written, _) = carried(own)
+    def element(own: Option[Surface], look: Either[Surface, Surface] = look) =
+      val (written, _) = carried(own, look)
       written.fold("")(surface) + place(placement)
     val scale = if placement.scale != 1 then s""" scale="${number(placement.scale)}"""" else ""
     s match
@@ -106,27 +105,26 @@ object SceneWriter:
       case t: Torus =>
         s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>""" +
           s"${element(Some(o.surfaceOf(leaf)))}</torus>"
-      case p: Placed =>
-        require(placement.isIdentity, "a placed shape cannot be placed again in the scene format")
+      case p: Placed if placement.isIdentity =>
         shape(p.shape, o, leaf, p.placement, enclosing, look)
+      case p: Placed =>
+        // Placed twice (a child of a union that was split): the union it came from, written
+        // again, which reading splits the same way.
+        // The union carries the surface where its pattern lies in the union's space.
+        val (outer, inner) = look match
+          case Right(top)
+              if Inheritance.depth(top, List(p.placement), placement :: enclosing) == 1 =>
+            (look, Left(top))
+          case Right(top)      => (Left(Surface()), Right(top))
+          case Left(inherited) => (look, Left(inherited))
+        val child = shape(p, o, leaf, Placement.Identity, placement :: enclosing, inner)
+        s"<union$scale>$child${element(None, outer)}</union>"
       case c: Csg =>
         val name = c.operation match
           case CsgOperation.Union        => "union"
           case CsgOperation.Intersection => "intersection"
           case CsgOperation.Difference   => "difference"
-        // The surface to carry here: a pattern that lies in this element's space on a leaf
-        // placed apart (it can sit nowhere else), else the one its leaves show most (the first of
-        // equals).
-        val shown   = (leaf until leaf + Shape.leafCount(c)).map(o.surfaceOf)
-        val pattern = shown.zip(leafSpaces(c, placement :: enclosing)).collectFirst {
-          case (surface @ Surface(_, _, checker: Pigment.Checker, _, _, _, _, _, _), own)
-              if checker.space == space && own != space =>
-            surface
-        }
-        val plain = shown.filter(_.pigment match
-          case checker: Pigment.Checker               => checker.space == space
-          case Pigment.Solid(_) | Pigment.Textured(_) => true)
-        val own         = pattern.orElse(plain.distinct.maxByOption(s => plain.count(_ == s)))
+        val own         = Inheritance.carried(o, c, leaf, placement :: enclosing)
         val (_, passed) = carried(own)
         val children    = c.children.indices.map { i =>
           shape(
@@ -139,15 +137,6 @@ object SceneWriter:
           )
         }
         s"<$name$scale>${children.mkString}${element(own)}</$name>"
-
-  /** The pattern space of each leaf of `s` (as a surface of its own would have it), inside
-    * elements placed by `enclosing`, innermost first.
-    */
-  private def leafSpaces(s: Shape, enclosing: List[Placement]): Vector[List[Placement]] = s match
-    case p: Placed => leafSpaces(p.shape, p.placement :: enclosing)
-    case c: Csg    => c.children.flatMap(leafSpaces(_, Placement.Identity :: enclosing))
-    case _: (Sphere | Plane | Triangle | Box | Cone | Torus) =>
-      Vector(enclosing.filterNot(_.isIdentity))
 
   private def place(p: Placement): String =
     (if p.rotate != Vec3.Zero then vector("rotate", p.rotate) else "") +

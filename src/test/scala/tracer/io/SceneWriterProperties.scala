@@ -175,6 +175,20 @@ class SceneWriterProperties extends ScalaCheckSuite:
       val scene = Scene(Camera(Vec3(0, 0, -5), Vec3.Zero), objects = List(SceneObject(triangle)))
       intercept[IllegalArgumentException](SceneWriter.write(scene))
 
+  test("a split union's children, placed twice, are written as their union and read back the same"):
+    val xml = """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+      |<union scale="2">
+      |  <box><corner1 x="0" y="0" z="0"/><corner2 x="1" y="1" z="1"/><translate x="1" y="0" z="0"/></box>
+      |  <torus major="1" minor="0.2"><rotate x="90" y="0" z="0"/>
+      |    <surface><checker size="0.5"><colour r="1" g="1" b="1"/><colour r="0" g="0" b="0"/></checker></surface></torus>
+      |  <surface><checker><colour r="1" g="0" b="0"/><colour r="0" g="0" b="1"/></checker></surface>
+      |  <rotate x="0" y="30" z="0"/>
+      |</union></scene>""".stripMargin
+    val scene = SceneXml.parse(xml, textures).fold(e => fail(e.describe), identity)
+    assertEquals(scene.objects.length, 2)
+    val text = SceneWriter.write(scene)
+    assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
+
   property("parse(write(scene)) = scene"):
     forAll(scene) { s =>
       val text = SceneWriter.write(s)
