@@ -51,52 +51,67 @@ object PovRay:
     s"light_source { ${vec(l.location)} color rgb ${colour(l.colour)}$area }"
 
   private def sceneObject(o: SceneObject): String =
-    val interior = if o.surface.ior != 1 then s" interior { ior ${num(o.surface.ior)} }" else ""
-    shape(o.shape, o, 0, Some(texture(o.surface)), interior)
+    shape(o.shape, o, 0, Nil, Nil, Right(o.surface))
 
-  /** The twin of `s`, whose first leaf is number `leaf` of `o`'s shape; `texture` is written on it
-    * (before its placement, so that a pattern moves with it), and a child of a combination gets
-    * one of its own only where its surface is not the whole object's.
+  /** The twin of `s`, whose first leaf is number `leaf` of `o`'s shape, placed by `chain` (the
+    * placements met on the way down, innermost first) inside elements placed by `enclosing`.
+    * `look` is the surface it must carry (`Right`, at the top) or the one it would inherit
+    * (`Left`): a primitive carries its own where it differs, a combination the one
+    * [[tracer.scene.Inheritance.carried]] chooses; the texture goes among the transforms where
+    * its pattern moves with the right ones, as POV-Ray's textures move with the transforms after
+    * them.
     */
   private def shape(
       s: Shape,
       o: SceneObject,
       leaf: Int,
-      texture: Option[String],
-      interior: String
+      chain: List[Placement],
+      enclosing: List[Placement],
+      look: Either[Surface, Surface]
   ): String =
-    val t = texture.fold("")(" " + _) + interior
+    def carried(own: Option[Surface]) = look match
+      case Right(top)      => (Some(top), top)
+      case Left(inherited) => (own.filter(_ != inherited), own.getOrElse(inherited))
+    // The transforms, with the texture before the ones its pattern moves with; at the top, the
+    // interior of the whole object.
+    def rest(own: Option[Surface]) =
+      val (written, _) = carried(own)
+      val at           = written.fold(0)(Inheritance.depth(_, chain, enclosing))
+      val moves        = chain.map(placement)
+      val interior     = look.fold(_ => "", top =>
+        if top.ior != 1 then s"interior { ior ${num(top.ior)} } " else ""
+      )
+      " " + moves.take(at).mkString + written.fold("")(texture(_) + " ") + moves.drop(at).mkString +
+        interior + "}"
+    def leafRest = rest(Some(o.surfaceOf(leaf)))
     s match
-      case s: Sphere    => s"sphere { ${vec(s.centre)}, ${num(s.radius)}$t }"
-      case p: Plane     => s"plane { ${vec(p.normal)}, ${num(p.distance)}$t }"
+      case s: Sphere    => s"sphere { ${vec(s.centre)}, ${num(s.radius)}$leafRest"
+      case p: Plane     => s"plane { ${vec(p.normal)}, ${num(p.distance)}$leafRest"
       case tr: Triangle =>
         tr.cornerNormals match
           case Some((n0, n1, n2)) =>
-            s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}$t }"
-          case None => s"triangle { ${vec(tr.t0)}, ${vec(tr.t1)}, ${vec(tr.t2)}$t }"
-      case b: Box  => s"box { ${vec(b.corner1)}, ${vec(b.corner2)}$t }"
+            s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}$leafRest"
+          case None => s"triangle { ${vec(tr.t0)}, ${vec(tr.t1)}, ${vec(tr.t2)}$leafRest"
+      case b: Box  => s"box { ${vec(b.corner1)}, ${vec(b.corner2)}$leafRest"
       case c: Cone =>
         val open = if c.open then " open" else ""
         if c.baseRadius == c.capRadius then
-          s"cylinder { ${vec(c.base)}, ${vec(c.cap)}, ${num(c.baseRadius)}$open$t }"
+          s"cylinder { ${vec(c.base)}, ${vec(c.cap)}, ${num(c.baseRadius)}$open$leafRest"
         else
-          s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$t }"
-      case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$t }"
-      case p: Placed =>
-        val inner = shape(p.shape, o, leaf, texture, interior)
-        inner.dropRight(1) + placement(p.placement) + "}"
-      case c: Csg =>
+          s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$leafRest"
+      case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$leafRest"
+      case p: Placed => shape(p.shape, o, leaf, p.placement :: chain, enclosing, look)
+      case c: Csg    =>
         val name = c.operation match
           case CsgOperation.Union        => "union"
           case CsgOperation.Intersection => "intersection"
           case CsgOperation.Difference   => "difference"
-        val children = c.children.indices.map { i =>
-          val first = leaf + c.firstLeaves(i)
-          val own   = o.surfaceOf(first)
-          val mine  = Option.when(own != o.surface)(this.texture(own))
-          shape(c.children(i), o, first, mine, "")
+        val own         = Inheritance.carried(o, c, leaf, chain ++ enclosing)
+        val (_, passed) = carried(own)
+        val children    = c.children.indices.map { i =>
+          shape(c.children(i), o, leaf + c.firstLeaves(i), Nil, chain ++ enclosing, Left(passed))
         }
-        s"$name { ${children.mkString(" ")}$t }"
+        s"$name { ${children.mkString(" ")}${rest(own)}"
 
   private def placement(p: Placement): String =
     s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "

@@ -132,6 +132,9 @@ class PovRaySuite extends munit.FunSuite:
     version3("glass-solids", List("-r", "5"))
     version3("glass-solids", List("-r", "2"))
 
+  test("inherited and own checkers sit where POV-Ray puts them, under placed children too"):
+    version3("inherit")
+
   test("quick mode on version 3 scenes matches POV-Ray's eye light"):
     version3("solids", List("-q"))
     version3("csg", List("-q"))
