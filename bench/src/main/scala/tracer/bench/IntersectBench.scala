@@ -14,11 +14,11 @@ import tracer.math.Vec3
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
 class IntersectBench:
   // Why: inputs in (JMH state) var fields, so the JIT cannot fold them into constants.
-  var sphere: Shape = Sphere(Vec3(0, 0, 5), 1)
-  var plane: Shape = Plane.at(Vec3(0, 1, 0), -1)
+  var sphere: Shape   = Sphere(Vec3(0, 0, 5), 1)
+  var plane: Shape    = Plane.at(Vec3(0, 1, 0), -1)
   var triangle: Shape = Triangle(Vec3(-1, -1, 5), Vec3(1, -1, 5), Vec3(0, 1, 5))
-  var hit: Ray = Ray(Vec3.Zero, Vec3(0.05, -0.05, 1).normalisedOr(Vec3.UnitZ))
-  var miss: Ray = Ray(Vec3.Zero, Vec3(0.5, 0.3, 1).normalisedOr(Vec3.UnitZ))
+  var hit: Ray        = Ray(Vec3.Zero, Vec3(0.05, -0.05, 1).normalisedOr(Vec3.UnitZ))
+  var miss: Ray       = Ray(Vec3.Zero, Vec3(0.5, 0.3, 1).normalisedOr(Vec3.UnitZ))
 
   /** A ray that hits a sphere. */
   @Benchmark def sphereHit: Double = Shape.distance(sphere, hit)

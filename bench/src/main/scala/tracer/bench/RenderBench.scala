@@ -21,7 +21,7 @@ class RenderBench:
   var sceneName: String = ""
 
   // Why: JMH state, built by setup() before any measurement: fields JMH can reach, so vars.
-  var scene: Scene = null         // nosemgrep: no-null — set by setup() before any benchmark
+  var scene: Scene         = null // nosemgrep: no-null — set by setup() before any benchmark
   var config: CameraConfig = null // nosemgrep: no-null — set by setup() before any benchmark
 
   @Setup def setup(): Unit =

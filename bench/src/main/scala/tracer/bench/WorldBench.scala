@@ -22,10 +22,10 @@ class WorldBench:
 
   // Why: JMH state, built by setup() before any measurement: fields JMH can reach, so vars;
   // `index` is the cursor that walks the rays, one step a call.
-  var world: World = null     // nosemgrep: no-null — set by setup() before any benchmark
-  var query: Query = null     // nosemgrep: no-null — set by setup() before any benchmark
+  var world: World     = null // nosemgrep: no-null — set by setup() before any benchmark
+  var query: Query     = null // nosemgrep: no-null — set by setup() before any benchmark
   var rays: Array[Ray] = null // nosemgrep: no-null — set by setup() before any benchmark
-  var index = 0
+  var index            = 0
 
   @Setup def setup(): Unit =
     val scene: Scene = BenchScenes.scene(sceneName)
@@ -48,4 +48,11 @@ class WorldBench:
   /** A shadow ray from the middle of the scene towards a light, stopping at the first blocker. */
   @Benchmark def occluded: Boolean =
     val r = next()
-    world.occluded(Ray(Vec3(0, 0.05, 2), (Vec3(-5, 8, -6) - Vec3(0, 0.05, 2) + r.direction).normalisedOr(Vec3.UnitY)), 12.0, query)
+    world.occluded(
+      Ray(
+        Vec3(0, 0.05, 2),
+        (Vec3(-5, 8, -6) - Vec3(0, 0.05, 2) + r.direction).normalisedOr(Vec3.UnitY)
+      ),
+      12.0,
+      query
+    )

@@ -78,9 +78,8 @@ object PovRay:
       val (written, _) = carried(own)
       val at           = written.fold(0)(Inheritance.depth(_, chain, enclosing))
       val moves        = chain.map(placement)
-      val interior     = look.fold(_ => "", top =>
-        if top.ior != 1 then s"interior { ior ${num(top.ior)} } " else ""
-      )
+      val interior     =
+        look.fold(_ => "", top => if top.ior != 1 then s"interior { ior ${num(top.ior)} } " else "")
       " " + moves.take(at).mkString + written.fold("")(texture(_) + " ") + moves.drop(at).mkString +
         interior + "}"
     def leafRest = rest(Some(o.surfaceOf(leaf)))
