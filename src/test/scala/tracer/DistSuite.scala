@@ -114,7 +114,15 @@ class DistSuite extends munit.FunSuite:
     def render(name: String) =
       val out = elsewhere.resolve(name)
       val e   = run(
-        asUser ++ Seq(s"$top/bin/tracer", "-x", "64", "-i", s"$scene", out.toString),
+        // The install's own copy of the scene: another user may not read the source tree.
+        asUser ++ Seq(
+          s"$top/bin/tracer",
+          "-x",
+          "64",
+          "-i",
+          s"$top/scenes/showcase.xml",
+          out.toString
+        ),
         elsewhere,
         env
       )
