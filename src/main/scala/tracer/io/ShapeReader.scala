@@ -54,8 +54,8 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
     for
       children <- contents(
         e,
-        placeable(at, Vocabulary.SphereAttributes),
-        placeable(at, Vocabulary.SphereChildren)
+        placeableAttributes(at, Vocabulary.SphereAttributes),
+        placeableChildren(at, Vocabulary.SphereChildren)
       )
       radius <- requiredNumber(e, "radius")
       _      <- check(
@@ -89,8 +89,8 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
     for
       children <- contents(
         e,
-        placeable(at, Vocabulary.PlaneAttributes),
-        placeable(at, Vocabulary.PlaneChildren)
+        placeableAttributes(at, Vocabulary.PlaneAttributes),
+        placeableChildren(at, Vocabulary.PlaneChildren)
       )
       normal   <- requiredVector(e, children, "normal")
       _        <- check(normal.normalised.isDefined, e, "<normal> must not be the zero vector")
@@ -292,11 +292,13 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
       _    <- check(base != cap, e, s"<base> and <cap> must differ, both are $base")
     yield (base, cap)
 
-  /** The names `names`, with the placement's where an element may be placed: inside a CSG element. */
-  private def placeable(at: Enclosure, names: Set[String]): Set[String] =
-    if at.parent.isEmpty then names
-    else if names.contains("surface") then names ++ Vocabulary.PlacementChildren
-    else names + "scale"
+  /** A version 1 shape's attributes, with `scale` inside a CSG element (where it may be placed). */
+  private def placeableAttributes(at: Enclosure, names: Set[String]): Set[String] =
+    if at.parent.isEmpty then names else names + "scale"
+
+  /** A version 1 shape's children, with `rotate` and `translate` inside a CSG element. */
+  private def placeableChildren(at: Enclosure, names: Set[String]): Set[String] =
+    if at.parent.isEmpty then names else names ++ Vocabulary.PlacementChildren
 
   /** The piece for `shape` read from `e`: placed, with its own surface or the inherited one. */
   private def finish(

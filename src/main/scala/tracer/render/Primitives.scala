@@ -178,26 +178,21 @@ object Primitives:
       dy: Double,
       dz: Double
   ): Double =
-    val nx = data(at)
-    val ny = data(at + 1)
-    val nz = data(at + 2)
-    val vd = nx * dx + ny * dy + nz * dz
-    if vd == 0 then Double.PositiveInfinity
+    // The triangle's plane is stored as a plane's is (Pn, D first), so its test is the plane's.
+    val t = plane(data, at, ox, oy, oz, dx, dy, dz)
+    // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped; the test of
+    // a hit that counts is unchanged (u's sign is final before v is computed).
+    if t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
     else
-      val t = (data(at + 3) - (nx * ox + ny * oy + nz * oz)) / vd
-      // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped; the
-      // test of a hit that counts is unchanged (u's sign is final before v is computed).
-      if !(t > 0) || t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
+      val qx = ox + dx * t - data(at + 4)
+      val qy = oy + dy * t - data(at + 5)
+      val qz = oz + dz * t - data(at + 6)
+      val qa = qx * data(at + 7) + qy * data(at + 8) + qz * data(at + 9)
+      val qb = qx * data(at + 10) + qy * data(at + 11) + qz * data(at + 12)
+      val bb = data(at + 13)
+      val ab = data(at + 14)
+      val u  = (bb * qa - ab * qb) / data(at + 15)
+      if !(u >= 0) then Double.PositiveInfinity
       else
-        val qx = ox + dx * t - data(at + 4)
-        val qy = oy + dy * t - data(at + 5)
-        val qz = oz + dz * t - data(at + 6)
-        val qa = qx * data(at + 7) + qy * data(at + 8) + qz * data(at + 9)
-        val qb = qx * data(at + 10) + qy * data(at + 11) + qz * data(at + 12)
-        val bb = data(at + 13)
-        val ab = data(at + 14)
-        val u  = (bb * qa - ab * qb) / data(at + 15)
-        if !(u >= 0) then Double.PositiveInfinity
-        else
-          val v = (qb - u * ab) / bb
-          if v >= 0 && u + v <= 1 then t else Double.PositiveInfinity
+        val v = (qb - u * ab) / bb
+        if v >= 0 && u + v <= 1 then t else Double.PositiveInfinity

@@ -1,19 +1,14 @@
 package tracer.io
 
-import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
 import tracer.scene.*
+import tracer.testkit.SceneDocuments
 
 /** Version 2 of the scene format (docs/scene-format.md, Version 2): the new surface attributes,
   * area lights and `smooth`, read exactly and refused with a line number when out of range.
   */
-class SceneXmlVersion2Suite extends munit.FunSuite:
+class SceneXmlVersion2Suite extends SceneDocuments:
 
-  private val texture                   = Bitmap.fill(1, 1, Colour.White)
-  private def parse(xml: String)        = SceneXml.parse(xml, _ => Right(texture))
-  private def scene(xml: String): Scene = parse(xml).fold(e => fail(e.describe), identity)
-  private def withCamera(body: String)  =
-    s"""<scene>\n<camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>\n$body</scene>"""
   private def sphere(surface: String) =
     withCamera(s"""<sphere radius="1"><centre x="0" y="0" z="0"/>\n$surface</sphere>""")
   private def triangle(surface: String) = withCamera(
@@ -24,12 +19,7 @@ class SceneXmlVersion2Suite extends munit.FunSuite:
 
   private def assertError(xml: String, line: Int, element: String, expected: String*)(using
       munit.Location
-  ): Unit =
-    parse(xml) match
-      case Right(s) => fail(s"parsed $s")
-      case Left(e)  =>
-        assertEquals((e.line, e.element), (Some(line), element), e.describe)
-        expected.foreach(x => assert(e.describe.contains(x), s"'${e.describe}' lacks '$x'"))
+  ): Unit = assertRefused(xml, line, element, expected*)
 
   test("a version 1 surface has every version 2 attribute at its default"):
     val s = scene(sphere("""<surface diffuse="0.5"/>""")).objects.head.surface
@@ -158,7 +148,7 @@ class SceneXmlVersion2Suite extends munit.FunSuite:
 
   test("smooth must be true, false or auto"):
     val mesh    = (smooth: String) => withCamera(s"""<mesh file="m.obj" smooth="$smooth"/>""")
-    val sources = SceneSources(_ => Right(texture), _ => Left("not read"))
+    val sources = SceneSources(_ => Right(texel), _ => Left("not read"))
     SceneXml.parse(mesh("yes"), sources) match
       case Left(e)  => assert(e.describe.contains("smooth must be true, false or auto"), e.describe)
       case Right(s) => fail(s"parsed $s")

@@ -1,31 +1,22 @@
 package tracer.io
 
 import tracer.geometry.*
-import tracer.image.{Bitmap, Colour}
+import tracer.image.Colour
 import tracer.math.{Placement, Vec3}
 import tracer.scene.*
+import tracer.testkit.SceneDocuments
 
 /** Version 3 of the scene format (docs/scene-format.md, Version 3): solids, placement, CSG,
   * the checker pattern and `smooth="auto"`, read exactly, and every rule a scene can break
   * refused with the element and its line.
   */
-class SceneXmlVersion3Suite extends munit.FunSuite:
+class SceneXmlVersion3Suite extends SceneDocuments:
 
-  private val texture                   = Bitmap.fill(1, 1, Colour.White)
-  private def parse(xml: String)        = SceneXml.parse(xml, _ => Right(texture))
-  private def scene(xml: String): Scene = parse(xml).fold(e => fail(e.describe), identity)
-  private def withCamera(body: String)  =
-    s"""<scene>\n<camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>\n$body</scene>"""
   private def objects(body: String) = scene(withCamera(body)).objects
 
   private def assertError(body: String, line: Int, element: String, expected: String*)(using
       munit.Location
-  ): Unit =
-    parse(withCamera(body)) match
-      case Right(s) => fail(s"parsed $s")
-      case Left(e)  =>
-        assertEquals((e.line, e.element), (Some(line), element), e.describe)
-        expected.foreach(x => assert(e.describe.contains(x), s"'${e.describe}' lacks '$x'"))
+  ): Unit = assertRefused(withCamera(body), line, element, expected*)
 
   private val unitBox  = """<corner1 x="-1" y="-1" z="-1"/><corner2 x="1" y="1" z="1"/>"""
   private val unitBall = """<sphere radius="1"><centre x="0" y="0" z="0"/></sphere>"""
