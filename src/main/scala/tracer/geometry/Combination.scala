@@ -13,7 +13,12 @@ private[geometry] object Combination:
       Shape
         .crossings(csg.children(i), ray)
         .filter(c => keeps(csg, i, ray.at(c.t)))
-        .map(c => c.copy(leaf = c.leaf + csg.firstLeaves(i)))
+        .map(c =>
+          // A subtracted child's outside is the inside of the whole: its normals turn round.
+          val outward =
+            if csg.operation == CsgOperation.Difference && i > 0 then -c.normal else c.normal
+          Crossing(c.t, outward, c.leaf + csg.firstLeaves(i))
+        )
     }
     all.sortBy(_.t)
 

@@ -267,14 +267,15 @@ object Shape:
       case s: Sphere =>
         // Equation 23: the outward normal, flipped for a ray that starts inside.
         val outward = (point - s.centre) * (1 / s.radius)
-        Hit(t, point, if startsInside(s, ray) then -outward else outward)
-      case p: Plane                                   => Hit(t, point, facing(p.normal, ray))
-      case tr: Triangle                               => Hit(t, point, facing(tr.normal, ray))
+        val inside  = startsInside(s, ray)
+        Hit(t, point, if inside then -outward else outward, front = !inside)
+      case p: Plane                                   => facingHit(t, point, p.normal, 0, ray)
+      case tr: Triangle                               => facingHit(t, point, tr.normal, 0, ray)
       case other: (Box | Cone | Torus | Placed | Csg) =>
         // The general path: the nearest crossing again, for its normal and leaf.
         crossings(other, ray).headOption match
-          case Some(c) => Hit(c.t, ray.at(c.t), facing(c.normal, ray), c.leaf)
-          case None    => Hit(t, point, facing(Vec3.UnitY, ray))
+          case Some(c) => facingHit(c.t, ray.at(c.t), c.normal, c.leaf, ray)
+          case None    => facingHit(t, point, Vec3.UnitY, 0, ray)
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector.
@@ -460,6 +461,13 @@ object Shape:
   private def startsInside(s: Sphere, ray: Ray): Boolean =
     val oc = s.centre - ray.origin
     oc.dot(oc) < s.radiusSquared
+
+  /** The hit whose outward normal is `outward`: equation 29's normal facing the ray, and whether
+    * the ray arrived on the outward side.
+    */
+  private inline def facingHit(t: Double, point: Vec3, outward: Vec3, leaf: Int, ray: Ray): Hit =
+    val front = outward.dot(ray.direction) < 0
+    Hit(t, point, if front then outward else -outward, leaf, front)
 
   /** Equation 29: Pn when vd < 0, else −Pn. */
   private inline def facing(normal: Vec3, ray: Ray): Vec3 =

@@ -61,12 +61,29 @@ object Camera:
   * @param location where it is (L0); for an area light, the centre of its grid
   * @param colour   its intensity per channel, ≥ 0 and possibly above 1
   * @param area     the grid of sub-lights that soften its shadows, if it is an area light
+  * @param fade     its fall-off with distance (version 4), if any: none is POV-Ray's default
   */
 final case class Light(
     location: Vec3,
     colour: Colour = Colour.White,
-    area: Option[AreaLight] = None
-)
+    area: Option[AreaLight] = None,
+    fade: Option[Fade] = None
+):
+  /** A(d), the share of the light's colour that reaches a point at distance `d`: 1 without fade. */
+  def attenuation(d: Double): Double = fade.fold(1.0)(_.attenuation(d))
+
+/** POV-Ray's `fade_distance` D and `fade_power` n (version 4): a light's colour scaled by
+  * A(d) = 2 / (1 + (d / D)ⁿ) at distance d, so A(D) = 1 and, for n = 2, inverse-square beyond D.
+  *
+  * @param distance D, > 0 and finite
+  * @param power    n, > 0 and finite
+  */
+final case class Fade(distance: Double, power: Double):
+  require(distance > 0 && distance.isFinite, s"fade-distance must be positive, got $distance")
+  require(power > 0 && power.isFinite, s"fade-power must be positive, got $power")
+
+  /** A(d) = 2 / (1 + (d / D)ⁿ); `StrictMath` so that every machine computes the same bits. */
+  def attenuation(d: Double): Double = 2 / (1 + StrictMath.pow(d / distance, power))
 
 /** The regular grid of sub-lights of an area light (scene-format-v2, Area lights), as POV-Ray's
   * `area_light a, b, samplesA, samplesB` without jitter: sub-light (i, j) sits at
@@ -129,7 +146,9 @@ final case class SceneObject(
   * @param specular   the Blinn highlight's strength, ≥ 0
   * @param roughness  the Blinn highlight's roughness, in (0, 1]: smaller is sharper
   * @param transmit   the share of light let through, 0..1
-  * @param ior        the index of refraction inside (spheres only), > 0
+  * @param ior        the index of refraction inside, > 0 (on the shapes versions 2 and 3 allow it)
+  * @param emission   the radiance the surface sends out from its outward side (version 4's
+  *   `<emission>`), each channel ≥ 0; black for a surface that does not glow
   */
 final case class Surface(
     diffuse: Double = 1.0,
@@ -140,10 +159,14 @@ final case class Surface(
     specular: Double = 0.0,
     roughness: Double = Surface.DefaultRoughness,
     transmit: Double = 0.0,
-    ior: Double = 1.0
+    ior: Double = 1.0,
+    emission: Colour = Colour.Black
 ):
   /** True when the surface has a highlight (phong or specular). */
   def highlighted: Boolean = phong > 0 || specular > 0
+
+  /** True when the surface glows (some channel of its emission is above 0). */
+  def emits: Boolean = emission.max > 0
 
 /** The defaults of [[Surface]]'s version 2 parameters. */
 object Surface:
