@@ -3,7 +3,7 @@ package tracer.render
 import java.util.concurrent.{Executors, ThreadFactory}
 import scala.concurrent.duration.Duration
 import scala.concurrent.{Await, ExecutionContext, Future}
-import tracer.image.{Bitmap, Colour}
+import tracer.image.{Bitmap, Colour, Raster}
 import tracer.scene.Scene
 
 /** Turns a scene into a picture: a pure function of the scene and the camera configuration. */
@@ -45,6 +45,34 @@ object Renderer:
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow()
 
+  /** Renders `scene` as [[render]] does, into linear floating-point pixels for a `.pfm` or `.exr`
+    * file: each pixel the mean of its samples as they are, neither brought into range nor encoded
+    * (`config.encoding` is not used). Same threads, band and row reports as [[render]].
+    */
+  def renderRaster(
+      scene: Scene,
+      config: CameraConfig,
+      threads: Int = defaultThreads,
+      onRow: () => Unit = () => (),
+      band: Range = Range(0, Int.MaxValue)
+  ): Raster =
+    require(threads >= 1, s"threads must be at least 1, got $threads")
+    val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
+    require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
+    val frame = Frame(scene, config)
+    val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
+    try
+      given ExecutionContext = ExecutionContext.fromExecutorService(pool)
+      Raster.byRows(config.columns, rows.size) { write =>
+        val done = Future.traverse(rows) { y =>
+          Future(RowFailure.guard { frame.linearRow(y - rows.start, y, write); onRow() })
+        }
+        Await.result(done, Duration.Inf)
+      }
+    // Why: rethrows the fatal error a row task carried out (RowFailure), as on this thread.
+    catch case RowFailure(cause) => throw cause
+    finally pool.shutdownNow(): Unit
+
   /** Renders `scene` on the calling thread alone. */
   def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
     val frame = Frame(scene, config)
@@ -67,10 +95,17 @@ object Renderer:
     /** Row `y` of the picture, written as row `at` by `write` (from [[Bitmap.byRows]]). */
     def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
       val shading = Shading(world, config.mode)
-      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y)))
+      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y, inRange = true)))
 
-    /** Pixel (x, y): the mean of its n × n samples, each brought into range (rendering.md). */
-    private def pixel(shading: Shading, x: Int, y: Int): Colour =
+    /** Row `y` as [[row]] writes it, for floating-point output: unclamped means, not encoded. */
+    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+      val shading = Shading(world, config.mode)
+      write(at, (x, _) => pixel(shading, x, y, inRange = false))
+
+    /** Pixel (x, y): the mean of its n × n samples, each brought into range first when `inRange`
+      * (rendering.md: the 8-bit rule), or as they are (floating-point output).
+      */
+    private def pixel(shading: Shading, x: Int, y: Int, inRange: Boolean): Colour =
       if n == 1 then shading.colour(projection.ray(x + 0.5, y + 0.5), config.depth)
       else
         // Perf: sum the samples' channels in locals rather than collecting n² colours.
@@ -81,8 +116,9 @@ object Renderer:
         while j < n do
           var i = 0
           while i < n do
-            val c =
-              shading.colour(projection.ray(x + offsets(i), y + offsets(j)), config.depth).inRange
+            val sample =
+              shading.colour(projection.ray(x + offsets(i), y + offsets(j)), config.depth)
+            val c = if inRange then sample.inRange else sample
             r += c.r
             g += c.g
             b += c.b

@@ -68,3 +68,37 @@ class AntialiasSuite extends munit.FunSuite:
       Renderer.render(scene, config, threads = 1),
       Renderer.render(scene, config, threads = 2)
     )
+
+  test("floating-point output holds the mean of the unclamped samples, not encoded"):
+    // As above: two floor samples of about (9.6, 0, 0) and two black: their mean, unclamped,
+    // is about 4.8, where the 8-bit picture holds 0.5.
+    val light = Light(Vec3(0, 5, 0), Colour.grey(10))
+    val scene = Scene(
+      level,
+      lights = List(light),
+      objects = List(matte(Plane.at(Vec3.UnitY, 0), Colour(1, 0, 0)))
+    )
+    val config     = CameraConfig(1, 1, 1, 1, 1, samples = 2)
+    val projection = Projection(level, config)
+    // Lambert at each floor sample: 10 · |rn · Sd| with Sd towards the light.
+    val floorSamples = for
+      j <- Renderer.sampleOffsets(2)
+      i <- Renderer.sampleOffsets(2)
+      r = projection.ray(i, j)
+      if r.direction.y < 0
+    yield
+      val p = r.at(-r.origin.y / r.direction.y)
+      10 * (light.location - p).normalised.get.y
+    assertEquals(floorSamples.length, 2)
+    val raster = Renderer.renderRaster(scene, config.copy(encoding = tracer.image.Encoding.Srgb))
+    assertEqualsDouble(raster(0, 0).r, floorSamples.sum / 4, 1e-5)
+    assertEquals(raster(0, 0).g, 0.0)
+    assert(raster(0, 0).r > 4, raster(0, 0).toString)
+
+  test("floating-point output is deterministic across thread counts and bands"):
+    val scene  = Scene(level, lights = List(Light(Vec3(1, 2, -4))), objects = List(floor))
+    val config = CameraConfig(1, 1, 0.75, 31, 17, samples = 3)
+    val whole  = Renderer.renderRaster(scene, config, threads = 1)
+    assertEquals(Renderer.renderRaster(scene, config, threads = 2), whole)
+    val bands = List(0 until 5, 5 until 17).map(b => Renderer.renderRaster(scene, config, band = b))
+    assertEquals(tracer.image.Raster.stack(bands), whole)
