@@ -78,7 +78,8 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
       else LightsReader.camera(e).map(c => found = Some(c))
     case "background" =>
       if backdrop.isDefined then e.fail("<scene> may have only one <background>")
-      else colour(e, 1).map(c => backdrop = Some(c))
+      // Version 4: a sky may be brighter than 1 (radiance, as a light's colour is an intensity).
+      else colour(e, Double.PositiveInfinity).map(c => backdrop = Some(c))
     case "light"                         => LightsReader.light(e).map(lights += _)
     case name if Vocabulary.Shapes(name) => shapes.sceneObjects(e).map(objects ++= _)
     case _                               => e.fail("unknown element inside <scene>")
