@@ -1,14 +1,16 @@
 package tracer.io
 
 import scala.collection.mutable
-import tracer.image.{Bitmap, Colour}
+import tracer.image.{Colour, Texels}
 import tracer.scene.*
 
 /** Reads scenes in the XML format of `scene-format.md` into [[tracer.scene.Scene]] values. */
 object SceneXml:
 
-  /** Loads the image a `<texture file="…">` names, or says why it cannot. */
-  type TextureLoader = String => Either[String, Bitmap]
+  /** Loads the image a `<texture file="…">` names (8-bit or floating-point), or says why it
+    * cannot.
+    */
+  type TextureLoader = String => Either[String, Texels]
 
   /** Loads the OBJ file a `<mesh file="…">` names, or says why it cannot. */
   type MeshLoader = String => Either[String, ObjMesh]
