@@ -13,7 +13,8 @@ import tracer.scene.*
   * vectors, and version 2's highlights, transmission, refraction, area lights and smooth mesh
   * faces as the finish, pigment, interior, `area_light` and `smooth_triangle` they stand for.
   * Used to compare the two renderers' pictures and speed; textures are not exported (a textured
-  * surface becomes mid-grey). Render it with `+FP File_Gamma=1.0 -A` (or `File_Gamma=sRGB` for
+  * surface becomes mid-grey), nor is version 4's emission (POV-Ray's `emission` is tinted by the
+  * pigment and glows on both sides, so it is no twin of ours). Render it with `+FP File_Gamma=1.0 -A` (or `File_Gamma=sRGB` for
   * `-g srgb`).
   */
 object PovRay:
