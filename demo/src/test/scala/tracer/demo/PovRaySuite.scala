@@ -153,7 +153,8 @@ class PovRaySuite extends munit.FunSuite:
   for name <- List("few", "spheres", "mesh-5000") do
     test(s"the $name benchmark scene matches POV-Ray's picture in 99.5% of its samples"):
       inTemporaryDirectory { dir =>
-        Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(BenchScenes.scene(name)))
+        val text = SceneWriter.write(BenchScenes.scene(name)).fold(fail(_), identity)
+        Files.writeString(dir.resolve("scene.xml"), text)
         agree(dir, 0.995)
       }
 
