@@ -75,11 +75,23 @@ class SceneSchemaSuite extends munit.FunSuite with SceneDocuments:
       )
       .toList
 
-  for page <- List("docs/scene-format.md", "docs/guide.md") do
+  private val pages =
+    "README.md" :: Files
+      .list(Path.of("docs"))
+      .iterator
+      .asScala
+      .map(_.toString)
+      .toList
+      .sorted
+      .filter(_.endsWith(".md"))
+
+  test("the scene format's pages have XML examples to check"):
+    for page <- List("docs/scene-format.md", "docs/guide.md") do
+      assert(examples(page).length >= 4, page)
+
+  for page <- pages do
     test(s"every XML example of $page is valid"):
-      val blocks = examples(page)
-      assert(blocks.nonEmpty, page)
-      blocks.zipWithIndex.foreach((xml, i) => assertValid(xml, s"$page's example ${i + 1}"))
+      examples(page).zipWithIndex.foreach((xml, i) => assertValid(xml, s"$page's example ${i + 1}"))
 
   private val sphere  = """<sphere radius="1"><centre x="0" y="0" z="0"/></sphere>"""
   private val corners =
