@@ -2,18 +2,28 @@ package tracer.testkit
 
 import java.nio.file.{Files, Path}
 
-/** The outside programs a suite drives, such as an independent renderer used as an oracle. */
+/** Outside programs some tests drive (ImageMagick, OpenEXR's tools): where they are, and the
+  * rule for a missing one: under CI (`CI` set) the test fails, elsewhere it is skipped saying why.
+  */
 object Tools:
 
-  /** True when the tests run in CI (the environment variable `CI` is set, as CI services and
-    * `.ci/run` set it): there a missing tool is a failure, never a silent skip.
-    */
-  def inCi: Boolean = sys.env.contains("CI")
+  /** The first executable called `name` on the PATH. */
+  def find(name: String): Option[Path] =
+    sys.env
+      .getOrElse("PATH", "")
+      .split(java.io.File.pathSeparator)
+      .iterator
+      .filter(_.nonEmpty)
+      .map(Path.of(_, name))
+      .find(Files.isExecutable(_))
 
-  /** Goes on when `program` is executable; otherwise skips the suite on a developer's machine,
-    * and fails it in CI, with `why` (which names how to install it).
-    */
-  def needs(program: Path, why: String)(using munit.Location): Unit =
-    if !Files.isExecutable(program) then
-      if inCi then munit.Assertions.fail(s"$program is missing and CI is set: $why")
-      else munit.Assertions.assume(false, s"$program is missing: $why")
+  /** The program `name`, or the test stops: failed under CI, skipped elsewhere. */
+  def require(name: String, install: String)(using munit.Location): Path =
+    find(name) match
+      case Some(path) => path
+      case None       =>
+        val why = s"needs $name ($install; .ci/run installs it)"
+        if sys.env.contains("CI") then munit.Assertions.fail(why)
+        else
+          munit.Assertions.assume(false, why)
+          Path.of(name)

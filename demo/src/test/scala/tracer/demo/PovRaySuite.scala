@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit
 import tracer.cli.Main
 import tracer.image.{Bitmap, Ppm}
 import tracer.io.{SceneWriter, SceneXml}
+import tracer.testkit.Tools
 
 /** An independent renderer agrees: POV-Ray 3.7, given the same scenes through
   * [[tracer.demo.PovRay]], draws the same pictures to within rounding and a few edge pixels —
@@ -13,13 +14,12 @@ import tracer.io.{SceneWriter, SceneXml}
   */
 class PovRaySuite extends munit.FunSuite:
 
-  private val povray = Path.of("/usr/bin/povray")
+  private val povray = Tools.find("povray").getOrElse(Path.of("/usr/bin/povray"))
 
   // The only independent oracle of versions 1 to 3: skipped on a machine without POV-Ray, but
   // in CI its absence fails the suite rather than passing it in silence.
   override def beforeAll(): Unit =
-    tracer.testkit.Tools
-      .needs(povray, "needs POV-Ray (apt-get install povray; .ci/run installs it)")
+    Tools.require("povray", "apt-get install povray"): Unit
 
   private val size = List("-x", "160", "-y", "90")
 
