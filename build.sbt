@@ -140,7 +140,7 @@ movie := {
 
 // `./sbt dist` (the course's `ant dist`): the release, in target/dist/: tracer-<version>.tar.gz,
 // which unpacks to tracer-<version>/ (bin/tracer, lib/ with the jar and the launcher, scenes/,
-// docs/, README.md, LICENSE), and tracer_<version>_all.deb, the same files installed under
+// docs/, scene.xsd, README.md, LICENSE), and tracer_<version>_all.deb, the same files installed under
 // /usr/share/tracer with `tracer` on PATH, `man tracer` and the docs in /usr/share/doc/tracer
 // (docs/install.md). Both ship root's assembled jar, whatever other modules the build has.
 // (`dist` is sbt-native-packager's key, here set for the whole build: it returns target/dist.)
@@ -178,7 +178,9 @@ lazy val launcher = project
         dir / "launcher.sh"     -> "lib/launcher.sh",
         dir / "tracer"          -> "bin/tracer",
         base / "README.md"      -> "README.md",
-        base / "LICENSE"        -> "LICENSE"
+        base / "LICENSE"        -> "LICENSE",
+        // The scene format's schema, at the top for editors (/usr/share/tracer/scene.xsd).
+        base / "docs" / "scene.xsd" -> "scene.xsd"
       ) ++ tree(dir / "training", "lib/training") ++ tree(base / "docs", "docs") ++
         tree(base / "scenes", "scenes", path => !path.startsWith("bench/")) // generated
     },
@@ -211,6 +213,9 @@ lazy val launcher = project
     },
     Debian / linuxPackageSymlinks += com.typesafe.sbt.packager.linux
       .LinuxSymlink("/usr/bin/tracer", "/usr/share/tracer/bin/tracer"),
+    // The gallery's scenes name their schema as ../docs/scene.xsd, as in the archive.
+    Debian / linuxPackageSymlinks += com.typesafe.sbt.packager.linux
+      .LinuxSymlink("/usr/share/tracer/docs", "/usr/share/doc/tracer/docs"),
     // The one maintainer script: the start-up caches that root's runs made beside the jar go
     // with the package (docs/install.md). No users, groups or services to set up.
     Debian / maintainerScripts := Map(

@@ -69,7 +69,8 @@ class DistSuite extends munit.FunSuite:
         .sorted
 
   work.test(
-    "the archive unpacks to tracer-VERSION/: bin/tracer, the jar, docs, scenes, README, LICENSE"
+    "the archive unpacks to tracer-VERSION/: bin/tracer, the jar, docs, scenes, the schema, " +
+      "README, LICENSE"
   ): d =>
     val top = unpack(d)
     assertEquals(Files.list(d.resolve("install")).iterator.asScala.toList, List(top))
@@ -82,9 +83,15 @@ class DistSuite extends munit.FunSuite:
         "docs/cli.md",
         "docs/install.md",
         "scenes/showcase.xml",
-        "scenes/models/knot.obj"
+        "scenes/models/knot.obj",
+        "scene.xsd",
+        "docs/scene.xsd"
       )
     do assert(Files.isRegularFile(top.resolve(path)), path)
+    assertEquals(
+      Files.readString(top.resolve("scene.xsd")),
+      Files.readString(home.resolve("docs/scene.xsd"))
+    )
     assert(Files.isExecutable(top.resolve("bin/tracer")))
     // One launcher logic: the very file that ./tracer sources.
     assertEquals(
@@ -174,9 +181,15 @@ class DistSuite extends munit.FunSuite:
         "/usr/share/doc/tracer/copyright",
         installedDoc("README.md"),
         installedDoc("docs/cli.md"),
-        "/usr/share/tracer/scenes/showcase.xml"
+        "/usr/share/tracer/scenes/showcase.xml",
+        "/usr/share/tracer/scene.xsd",
+        installedDoc("docs/scene.xsd")
       )
     do assert(has(path), s"$path not in the package:\n${listing.mkString("\n")}")
+    assert(
+      listing.exists(_.contains(" ./usr/share/tracer/docs -> /usr/share/doc/tracer/docs")),
+      "the gallery's ../docs/scene.xsd leads to the schema"
+    )
     assert(
       listing.exists(_.contains(" ./usr/bin/tracer -> /usr/share/tracer/bin/tracer")),
       "tracer on PATH is a link to the launcher"
@@ -204,6 +217,8 @@ class DistSuite extends munit.FunSuite:
       val page = String(GZIPInputStream(Files.newInputStream(man)).readAllBytes())
       assert(page.startsWith(s".TH TRACER 1"), page.take(80))
       assert(Files.isRegularFile(Path.of(installedDoc("docs/install.md"))))
+      assert(Files.isRegularFile(Path.of("/usr/share/tracer/scene.xsd")))
+      assert(Files.isRegularFile(Path.of("/usr/share/tracer/scenes/../docs/scene.xsd")))
     finally
       val removed = run(Seq("dpkg", "-r", "tracer"), d)
       assertEquals(removed.status, 0, removed.out + removed.err)

@@ -34,10 +34,11 @@ object ManPage:
       ".SH DESCRIPTION",
       description,
       ".SH OPTIONS"
-    ) ++ options ++ List(".SH NOTES") ++ noteText ++ environment ++ List(
+    ) ++ options ++ List(".SH NOTES") ++ noteText ++ environment ++ files ++ List(
       ".SH SEE ALSO",
       "The documentation in /usr/share/doc/tracer (or docs/ beside an unpacked archive):",
-      "cli.md (the command line), scene-format.md (the scene files), install.md."
+      "cli.md (the command line), scene-format.md (the scene files), guide.md (editing scenes),",
+      "install.md."
     )).mkString("", "\n", "\n")
 
   /** Writes the manual page of this build to the file named by the first argument, or to standard
@@ -61,6 +62,24 @@ object ManPage:
   private def text(s: String): String =
     val escaped = s.replace("\\", "\\e").replace("-", "\\-")
     if escaped.startsWith(".") || escaped.startsWith("'") then "\\&" + escaped else escaped
+
+  /** The files the package installs that a user points other programs at: the scene schema. */
+  private val files = List(
+    ".SH FILES",
+    ".TP",
+    ".B /usr/share/tracer/scene.xsd",
+    "The scene format as an XML Schema (also docs/scene.xsd beside an unpacked archive), for",
+    "completion and checking while a scene is edited. Name it on the root element:",
+    "<scene xmlns:xsi=\"http://www.w3.org/2001/XMLSchema\\-instance\"",
+    "xsi:noNamespaceSchemaLocation=\"/usr/share/tracer/scene.xsd\">.",
+    "VS Code with Red Hat's XML extension (redhat.vscode\\-xml) and IntelliJ IDEA then complete",
+    "element and attribute names and flag mistakes as you type; without the attributes, map",
+    "the files in VS Code's setting xml.fileAssociations (pattern and systemId) or in IntelliJ's",
+    "Settings, Languages & Frameworks, Schemas and DTDs. From the shell:",
+    "xmllint \\-\\-noout \\-\\-schema /usr/share/tracer/scene.xsd scene.xml.",
+    "Some rules (a pole at right angles to the equator, corners not collinear) only the tracer",
+    "checks."
+  )
 
   /** The launcher's environment variables, as docs/install.md tells them. */
   private val environment = List(

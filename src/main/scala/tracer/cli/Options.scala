@@ -85,6 +85,12 @@ object Options:
       Command.Help(usage)
     else
       (result, errors) match
+        case (Some(options), Nil) if modes(options).length > 1 =>
+          val named = modes(options)
+          Command.UsageError(
+            s"${named.init.mkString(", ")} and ${named.last} cannot be used together: " +
+              "each is a mode of its own"
+          )
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
         case (Some(options @ Options(batch = Some(list))), Nil) =>
@@ -103,6 +109,17 @@ object Options:
         case (Some(options), Nil) => Command.Render(options)
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
+
+  /** The modes that `options` asks for, of `--version`, `--batch`, `--size` and `--stack`, which
+    * exclude each other (each does something else than render OUTPUT).
+    */
+  private def modes(options: Options): List[String] =
+    List(
+      "--version" -> options.version,
+      "--batch"   -> options.batch.isDefined,
+      "--size"    -> options.size,
+      "--stack"   -> options.stack.nonEmpty
+    ).collect { case (name, true) => name }
 
   /** The Java this process runs on, as `--version`'s second line names it. */
   private[cli] def javaLine: String =
@@ -178,11 +195,13 @@ object Options:
       opt[Int]('a', "antialias")
         .valueName("n")
         .validate(v =>
-          if v >= 1 && v <= 16 then Right(())
-          else Left(s"-a must be an integer from 1 to 16, got $v")
+          if v >= 1 && v <= CameraConfig.MaxSamples then Right(())
+          else Left(s"-a must be an integer from 1 to ${CameraConfig.MaxSamples}, got $v")
         )
         .action((v, o) => o.copy(samples = v))
-        .text("antialiasing: average n×n samples a pixel, 1 to 16 (default 1)"),
+        .text(
+          s"antialiasing: average n×n samples a pixel, 1 to ${CameraConfig.MaxSamples} (default 1)"
+        ),
       opt[String]('g', "gamma")
         .valueName("srgb|G")
         .validate(v => Encoding.parse(v).map(_ => ()))

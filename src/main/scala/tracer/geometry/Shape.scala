@@ -259,7 +259,8 @@ object Shape:
     Option.when(t < Double.PositiveInfinity)(hitAt(shape, ray, t))
 
   /** The hit at distance `t` (from [[distance]]) along `ray`: the point and the normal facing the
-    * ray, and for a combination the leaf it is on.
+    * ray, and for a combination the leaf it is on. A `t` at which a box, cone, torus, placed shape
+    * or combination has no crossing is a caller's bug: `IllegalArgumentException`.
     */
   def hitAt(shape: Shape, ray: Ray, t: Double): Hit =
     val point = ray.at(t)
@@ -275,7 +276,12 @@ object Shape:
         // The general path: the nearest crossing again, for its normal and leaf.
         crossings(other, ray).headOption match
           case Some(c) => facingHit(c.t, ray.at(c.t), c.normal, c.leaf, ray)
-          case None    => facingHit(t, point, Vec3.UnitY, 0, ray)
+          case None    =>
+            // Why: distance is the first crossing, so a t from it always has one (ShapeProperties);
+            // none means a caller's t that is not a hit, a bug a made-up normal would only hide.
+            throw IllegalArgumentException(
+              s"Shape.hitAt: no crossing of $other along $ray (t = $t)"
+            )
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector.

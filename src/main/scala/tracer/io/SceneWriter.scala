@@ -11,15 +11,61 @@ import tracer.scene.*
   * Numbers are written exactly (shortest round-trip decimal), so reading the text back gives the
   * same scene; a texture is written as its `name`, which must be the file it can be loaded from.
   * Version 2 attributes (and version 4's emission and fade) are written only where they differ
-  * from their defaults, so a version 1 scene is written as version 1. A mesh triangle with smooth normals or texture coordinates at
-  * its corners has no element of its own (only `<mesh>` makes them) and is refused, rather than
-  * written without them. Version 3 solids and combinations are written with their placement, and
-  * a child of a combination with its surface where it differs from the one it would inherit.
+  * from their defaults, so a version 1 scene is written as version 1. Version 3 solids and
+  * combinations are written with their placement, and a child of a combination with its surface
+  * where it differs from the one it would inherit. What the format cannot say is not written but
+  * told: a number that is not finite, and a mesh triangle with smooth normals or texture
+  * coordinates at its corners (only `<mesh>` makes those, from its OBJ file, and a `<triangle>`
+  * would lose them).
   */
 object SceneWriter:
 
-  /** The XML document for `scene`. */
-  def write(scene: Scene): String =
+  /** The XML document for `scene`, or why the format cannot say it. */
+  def write(scene: Scene): Either[String, String] =
+    unwritable(scene).toLeft(document(scene))
+
+  /** The first part of `scene` that the format cannot say, described. */
+  private def unwritable(scene: Scene): Option[String] =
+    scene.objects.iterator
+      .flatMap(o => leaves(o.shape))
+      .collectFirst {
+        case t: Triangle if t.cornerNormals.isDefined =>
+          s"a triangle with smooth normals at its corners ${corners(t)} has no element of its " +
+            "own: only <mesh smooth=\"true\"> makes one, from its OBJ file"
+        case t: Triangle if t.textureCorners.isDefined =>
+          s"a triangle with texture coordinates at its corners ${corners(t)} has no element of " +
+            "its own: only <mesh> makes one, from its OBJ file"
+      }
+      .orElse(nonFinite(scene, "scene"))
+
+  private def corners(t: Triangle): String = s"${t.t0}, ${t.t1}, ${t.t2}"
+
+  /** The primitive shapes inside `s`. */
+  private def leaves(s: Shape): Iterator[Shape] = s match
+    case c: Csg    => c.children.iterator.flatMap(leaves)
+    case p: Placed => leaves(p.shape)
+    case other     => Iterator(other)
+
+  /** The first number in `value`, at any depth of its fields, that is not finite, named by its
+    * path from `path` (`scene.objects(2).shape.centre.y`). A texture's pixels are not written
+    * (only its name), so they are not looked at.
+    */
+  private def nonFinite(value: Any, path: String): Option[String] = value match
+    case d: Double if !d.isFinite =>
+      Some(s"$path is $d: the scene format holds finite numbers only")
+    case _: Texture      => None
+    case xs: Iterable[?] =>
+      xs.iterator.zipWithIndex.map((x, i) => nonFinite(x, s"$path($i)")).collectFirst {
+        case Some(m) => m
+      }
+    case p: Product =>
+      p.productIterator.zipWithIndex
+        .map((v, i) => nonFinite(v, s"$path.${p.productElementName(i)}"))
+        .collectFirst { case Some(m) => m }
+    case _ => None
+
+  /** The document for a scene that [[unwritable]] passed. */
+  private def document(scene: Scene): String =
     val lines = Vector.newBuilder[String]
     lines += """<?xml version="1.0" encoding="UTF-8"?>"""
     lines += "<scene>"
@@ -82,14 +128,6 @@ object SceneWriter:
         s"""<plane distance="${number(p.distance)}"$scale>${vector("normal", p.normal)}""" +
           s"${element(Some(o.surfaceOf(leaf)))}</plane>"
       case t: Triangle =>
-        require(
-          t.cornerNormals.isEmpty,
-          "a smooth triangle cannot be written as <triangle>: use <mesh smooth=\"true\">"
-        )
-        require(
-          t.textureCorners.isEmpty,
-          "a triangle with texture coordinates at its corners cannot be written as <triangle>: use <mesh>"
-        )
         s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}" +
           s"${element(Some(o.surfaceOf(leaf)))}</triangle>"
       case b: Box =>
@@ -173,10 +211,8 @@ object SceneWriter:
   private def colour(name: String, c: Colour): String =
     s"""<$name r="${number(c.r)}" g="${number(c.g)}" b="${number(c.b)}"/>"""
 
-  /** `d` in the scene format, reading back as exactly `d`. */
-  private def number(d: Double): String =
-    require(d.isFinite, s"a scene holds only finite numbers, got $d")
-    Decimal.show(d)
+  /** `d` in the scene format, reading back as exactly `d` (finite: [[unwritable]] saw to it). */
+  private def number(d: Double): String = Decimal.show(d)
 
   private def escape(text: String): String =
     text.flatMap {

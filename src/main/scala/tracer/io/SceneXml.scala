@@ -64,14 +64,21 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
   private val lights                    = Vector.newBuilder[Light]
   private val objects                   = Vector.newBuilder[SceneObject]
 
-  /** The `<scene>` element: the right name, no attributes. */
+  /** The `<scene>` element: the right name, and no attributes but those that name its schema
+    * (`xmlns:xsi` for XML Schema's instance namespace, and `xsi:noNamespaceSchemaLocation`).
+    */
   def root(e: Element): Result[Unit] =
     document = Some(e)
+    val instance = Vocabulary.SchemaInstance
     if e.name != "scene" then e.fail("the root element must be <scene>")
     else
-      unknownAttribute(e, Vocabulary.NoNames).fold(Right(()))(key =>
-        e.fail(s"unknown attribute $key")
-      )
+      (unknownAttribute(e, Vocabulary.SceneAttributes), e.attribute("xmlns:xsi")) match
+        case (Some(key), _)                           => e.fail(s"unknown attribute $key")
+        case (None, Some(other)) if other != instance =>
+          e.fail(s"attribute xmlns:xsi must be $instance, got '$other'")
+        case (None, None) if e.attribute(Vocabulary.SchemaLocation).isDefined =>
+          e.fail(s"attribute ${Vocabulary.SchemaLocation} needs xmlns:xsi=\"$instance\"")
+        case _ => Right(())
 
   /** A child of `<scene>`, read into the scene's parts. */
   def child(e: Element): Result[Unit] = e.name match

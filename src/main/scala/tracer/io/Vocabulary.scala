@@ -5,6 +5,15 @@ private[io] object Vocabulary:
   /** No names at all: for an element without attributes, or without children. */
   val NoNames: Set[String] = Set()
 
+  /** The namespace of XML Schema's instance attributes, which `xmlns:xsi` must name. */
+  val SchemaInstance: String = "http://www.w3.org/2001/XMLSchema-instance"
+
+  /** The attribute that names the schema of a scene (docs/scene.xsd), allowed on `<scene>`. */
+  val SchemaLocation: String = "xsi:noNamespaceSchemaLocation"
+
+  /** `<scene>`'s attributes: the declaration of the `xsi` prefix and the schema's location. */
+  val SceneAttributes: Set[String] = Set("xmlns:xsi", SchemaLocation)
+
   /** The shapes of versions 1 and 2. */
   val PlainShapes: Set[String] = Set("sphere", "plane", "triangle", "mesh")
 

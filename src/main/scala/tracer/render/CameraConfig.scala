@@ -20,7 +20,7 @@ enum ShadingMode:
   * @param rows      Y, the image height in pixels, ≥ 1
   * @param depth     the most reflections a ray may make, ≥ 0
   * @param mode      full or quick shading
-  * @param samples   n, for n × n samples a pixel (antialiasing), 1..16
+  * @param samples   n, for n × n samples a pixel (antialiasing), 1 to [[CameraConfig.MaxSamples]]
   * @param encoding  how a pixel's colour is encoded for the file (`-g`)
   */
 final case class CameraConfig(
@@ -39,7 +39,7 @@ final case class CameraConfig(
   require(depth >= 0, s"the reflection depth must be at least 0, got $depth")
   require(
     samples >= 1 && samples <= CameraConfig.MaxSamples,
-    s"samples must be 1..16, got $samples"
+    s"samples must be 1..${CameraConfig.MaxSamples}, got $samples"
   )
 
 /** Defaults and constructors for [[CameraConfig]]. */

@@ -146,7 +146,8 @@ final case class SceneObject(
   * @param specular   the Blinn highlight's strength, ≥ 0
   * @param roughness  the Blinn highlight's roughness, in (0, 1]: smaller is sharper
   * @param transmit   the share of light let through, 0..1
-  * @param ior        the index of refraction inside, > 0 (on the shapes versions 2 and 3 allow it)
+  * @param ior        the index of refraction inside, > 0: on a sphere, a closed solid or a CSG
+  *   object at the top of a scene (the reader refuses it elsewhere); 1 on every other shape
   * @param emission   the radiance the surface sends out from its outward side (version 4's
   *   `<emission>`), each channel ≥ 0; black for a surface that does not glow
   */

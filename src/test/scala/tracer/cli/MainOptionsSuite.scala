@@ -142,6 +142,12 @@ class MainOptionsSuite extends munit.FunSuite with Images:
     assert(!Files.exists(d.resolve("ignored.png")))
     assertFailed(run(d, "--size")("<scene>"), 1, "scene")
 
+  dir.test("--size --stack: exit 2, one line naming both, nothing written"): d =>
+    run(d, "-x", "20", "-R", "0:4", "top.ppm")(simple): Unit
+    val r = run(d, "--size", "--stack", "top.ppm", "joined.ppm")(simple)
+    assertFailed(r, 2, "--size and --stack")
+    assert(!Files.exists(d.resolve("joined.ppm")))
+
   dir.test("--stack writes OUTPUT as the images one below the other, whole or not at all"): d =>
     run(d, "-x", "20", "-R", "0:4", "top.ppm")(simple): Unit
     run(d, "-x", "20", "-R", "4:15", "bottom.png")(simple): Unit

@@ -10,9 +10,30 @@ class ManPageSuite extends munit.FunSuite:
     val sections = page.linesIterator.filter(_.startsWith(".SH ")).toList
     assertEquals(
       sections,
-      List("NAME", "SYNOPSIS", "DESCRIPTION", "OPTIONS", "NOTES", "ENVIRONMENT", "SEE ALSO")
+      List(
+        "NAME",
+        "SYNOPSIS",
+        "DESCRIPTION",
+        "OPTIONS",
+        "NOTES",
+        "ENVIRONMENT",
+        "FILES",
+        "SEE ALSO"
+      )
         .map(".SH " + _)
     )
+
+  test("the page says where the scene schema is and how editors complete scenes with it"):
+    val text = page.replace("\\-", "-")
+    for words <- List(
+        "/usr/share/tracer/scene.xsd",
+        "xsi:noNamespaceSchemaLocation",
+        "redhat.vscode-xml",
+        "xml.fileAssociations",
+        "IntelliJ",
+        "xmllint"
+      )
+    do assert(text.contains(words), words)
 
   test("every option of the usage is a tagged paragraph with its text, hyphens escaped"):
     val options = Options.usage.linesIterator.filter(_.startsWith("  ")).map(_.trim).toList

@@ -89,9 +89,54 @@ class OptionsSuite extends munit.FunSuite:
     assert(usageError("-a", "0", "o.ppm").contains("-a"))
     assert(usageError("-a", "17", "o.ppm").contains("-a"))
 
-  test("-a accepts 1 to 16"):
+  test("-a accepts 1 to CameraConfig.MaxSamples (16), and the usage and the error say so"):
+    val max = tracer.render.CameraConfig.MaxSamples
+    assertEquals(max, 16)
     assertEquals(options("-a", "1", "o.ppm").samples, 1)
-    assertEquals(options("-a", "16", "o.ppm").samples, 16)
+    assertEquals(options("-a", s"$max", "o.ppm").samples, max)
+    assert(usageError("-a", s"${max + 1}", "o.ppm").contains(s"from 1 to $max"))
+    assert(Options.usage.contains(s"1 to $max (default 1)"), Options.usage)
+
+  // Each mode does something other than render OUTPUT; before they were exclusive, the order of
+  // the cases decided (--size --stack x dropped --stack without a word).
+  private val modes = List(
+    "--version" -> List("--version"),
+    "--batch"   -> List("--batch", "list.txt"),
+    "--size"    -> List("--size"),
+    "--stack"   -> List("--stack", "a.ppm")
+  )
+
+  test("every two of --version, --batch, --size and --stack are a usage error naming both"):
+    for
+      (a, aArgs) <- modes
+      (b, bArgs) <- modes
+      if a != b
+    do
+      val message = usageError((aArgs ++ bArgs :+ "out.png")*)
+      val first   = List(a, b).minBy(m => modes.indexWhere(_._1 == m))
+      val second  = List(a, b).maxBy(m => modes.indexWhere(_._1 == m))
+      assertEquals(
+        message,
+        s"$first and $second cannot be used together: each is a mode of its own"
+      )
+
+  test("--size --stack x is refused, not read as --size alone"):
+    assertEquals(
+      Options.parse(List("--size", "--stack", "x.ppm", "out.png")),
+      Command.UsageError("--size and --stack cannot be used together: each is a mode of its own")
+    )
+
+  test("three modes at once are named all three"):
+    assert(
+      usageError("--size", "--version", "--stack", "a.ppm", "o.png")
+        .startsWith("--version, --size and --stack cannot be used together"),
+      usageError("--size", "--version", "--stack", "a.ppm", "o.png")
+    )
+
+  test("one mode alone is still that mode"):
+    Options.parse(List("--size")) match
+      case Command.Size(_) => ()
+      case other           => fail(s"expected --size, got $other")
 
   test("two OUTPUTs are a usage error"):
     assert(usageError("a.png", "b.png").contains("b.png"))

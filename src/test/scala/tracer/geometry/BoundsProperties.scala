@@ -6,7 +6,9 @@ import org.scalacheck.Prop.forAll
 import tracer.math.{Placement, Vec3}
 import tracer.testkit.Generators.*
 
-/** [[Bounds.of]] holds every point a ray can hit, and leaves out only unbounded shapes. */
+/** [[Shape.bounds]] holds every point a ray can hit and leaves out only unbounded shapes, and
+  * [[Bounds.of]] and [[Bounds.around]] are the smallest boxes holding their points.
+  */
 class BoundsProperties extends ScalaCheckSuite:
 
   private val small               = Gen.choose(-10.0, 10.0)
@@ -29,7 +31,9 @@ class BoundsProperties extends ScalaCheckSuite:
     )
   )
 
-  /** The box grown by a hair, for hit points computed in floating point. */
+  /** The box grown by a hair, for hit points computed in floating point: 1e-7 of the box's size,
+    * for every shape alike (placed ones, whose hits come back through a transform, included).
+    */
   private def near(b: Bounds, p: Vec3): Boolean =
     val e = 1e-7 * (1 + b.hi.length + b.lo.length)
     Bounds(b.lo - Vec3(e, e, e), b.hi + Vec3(e, e, e)).contains(p)
@@ -37,10 +41,19 @@ class BoundsProperties extends ScalaCheckSuite:
   property("every hit of a bounded shape lies in its bounds"):
     forAll(bounded, point, unitVec) { (shape, origin, direction) =>
       val ray = Ray(origin * 2, direction)
-      // Placed shapes' hits come back through a transform: a looser hair.
-      val t = Shape.distance(shape, ray)
-      Shape.bounds(shape).isDefined &&
-      (t == Double.PositiveInfinity || near(Shape.bounds(shape).get, ray.at(t)))
+      val t   = Shape.distance(shape, ray)
+      Shape.bounds(shape).exists(b => t == Double.PositiveInfinity || near(b, ray.at(t)))
+    }
+
+  property("Bounds.of three points is the smallest box holding them, as Bounds.around"):
+    forAll(point, point, point) { (a, b, c) =>
+      val box = Bounds.of(a, b, c)
+      val all = List(a, b, c)
+      // Holds each point, and each of its six faces touches one of them: nothing smaller holds all.
+      all.forall(box.contains) && box == Bounds.around(all) &&
+      all.exists(_.x == box.lo.x) && all.exists(_.x == box.hi.x) &&
+      all.exists(_.y == box.lo.y) && all.exists(_.y == box.hi.y) &&
+      all.exists(_.z == box.lo.z) && all.exists(_.z == box.hi.z)
     }
 
   test("a plane has no bounds"):

@@ -4,7 +4,6 @@ import munit.ScalaCheckSuite
 import org.scalacheck.Prop.forAll
 import org.scalacheck.{Gen, Prop}
 import tracer.math.{Placement, Vec3}
-import tracer.render.Shading
 import tracer.testkit.Generators.*
 
 /** Geometric properties of intersections with random shapes and rays (after pbrt's shapes_test). */
@@ -179,9 +178,22 @@ class ShapeProperties extends ScalaCheckSuite:
         case other          => reentrant(other) || Shape.inside(other, r.origin)
       fromInside || Shape.intersect(s, r).forall { h =>
         // The offset the renderer gives shadow and reflected rays: a hit here is shadow acne.
-        val away = Ray(h.point + h.normal * Shading.Epsilon, h.normal)
+        val away = Ray(h.point + h.normal * tracer.testkit.Offsets.Ray, h.normal)
         Shape.distance(s, away) == Double.PositiveInfinity
       }
+    }
+
+  // Shape.hitAt finds the normal and leaf of a general shape again from its crossings; with the
+  // t that distance gave there is always one, so its "no crossing" branch is unreachable (and
+  // fails loudly, ShapeSuite): distance is the first crossing, exactly.
+  property("wherever distance finds a hit, the first crossing is at that very t"):
+    val combined = Gen
+      .zip(shape, shape, Gen.oneOf(CsgOperation.values.toIndexedSeq))
+      .map((a, b, op) => Csg(op, Vector(a, b)))
+    forAll(Gen.oneOf(solid, placed, combined), vec, unitVec) { (s, o, d) =>
+      val ray = Ray(o, d)
+      val t   = Shape.distance(s, ray)
+      t == Double.PositiveInfinity || Shape.crossings(s, ray).headOption.exists(_.t == t)
     }
 
   property("distance is never NaN for finite inputs"):

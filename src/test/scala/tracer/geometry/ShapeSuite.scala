@@ -94,3 +94,15 @@ class ShapeSuite extends munit.FunSuite with Approx:
       Sphere(Vec3.Zero, 1, pole = Vec3.UnitY, equator = Vec3(0, 1, 1))
     ): Unit
     intercept[IllegalArgumentException](Plane.at(Vec3.Zero, 1))
+
+  test(
+    "Shape.hitAt at a t where a general shape has no crossing fails loudly, not with a made-up normal"
+  ):
+    val box  = Box(Vec3(-1, -1, -1), Vec3(1, 1, 1))
+    val miss = Ray(Vec3(5, 5, -5), Vec3.UnitZ)
+    assertEquals(Shape.distance(box, miss), Double.PositiveInfinity)
+    val e = intercept[IllegalArgumentException](Shape.hitAt(box, miss, 1.0))
+    assert(e.getMessage.contains("no crossing"), e.getMessage)
+    // With the t that distance gives, the hit is the crossing's.
+    val ray = Ray(Vec3(0, 0, -5), Vec3.UnitZ)
+    assertEquals(Shape.hitAt(box, ray, Shape.distance(box, ray)).normal, -Vec3.UnitZ)

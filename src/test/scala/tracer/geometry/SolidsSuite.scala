@@ -167,9 +167,29 @@ class SolidsSuite extends munit.FunSuite:
       Shape.bounds(a)
     )
 
+  test("an intersection holding a triangle is the part of the triangle inside the other children"):
+    // A triangle has no inside (the reader allows it in a <union> only), so built in code an
+    // intersection keeps none of the ball's surface and the part of the triangle within the ball,
+    // as POV-Ray's intersection does: a disc of radius 1 in the plane z = 0.
+    val ball     = Sphere(Vec3.Zero, 1)
+    val sheet    = Triangle(Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0))
+    val both     = Csg(CsgOperation.Intersection, Vector(ball, sheet))
+    val straight = Ray(Vec3(0, 0, -5), Vec3.UnitZ)
+    assertEquals(Shape.distance(both, straight), 5.0) // the sheet at z = 0, not the ball at 4
+    val hit = Shape.hitAt(both, straight, 5.0)
+    assertEquals((hit.leaf, hit.normal), (1, -Vec3.UnitZ))
+    assertEquals(Shape.distance(both, Ray(Vec3(0.5, 0.5, -5), Vec3.UnitZ)), 5.0)
+    // Outside the ball the sheet is cut away; along the sheet's plane nothing is hit.
+    assertEquals(Shape.distance(both, Ray(Vec3(2, 0, -5), Vec3.UnitZ)), Double.PositiveInfinity)
+    assertEquals(Shape.distance(both, Ray(Vec3(-5, 0, 0.5), Vec3.UnitX)), Double.PositiveInfinity)
+    assert(!Shape.inside(both, Vec3.Zero))
+
   test("Polynomial.roots finds every real root of a quartic in an interval, in order"):
     // (x − 1)(x − 2)(x − 3)(x − 4) = x⁴ − 10x³ + 35x² − 50x + 24
-    val c = IArray(24.0, -50.0, 35.0, -10.0, 1.0)
-    List(1.0, 2.0, 3.0, 4.0).zip(Polynomial.roots(c, 0, 10)).foreach((a, b) => assert(near(a, b)))
+    val c     = IArray(24.0, -50.0, 35.0, -10.0, 1.0)
+    val roots = Polynomial.roots(c, 0, 10)
+    // All four, not only the first: zip alone would pass on a prefix.
+    assertEquals(roots.length, 4, roots)
+    List(1.0, 2.0, 3.0, 4.0).zip(roots).foreach((a, b) => assert(near(a, b), s"$a vs $b in $roots"))
     assertEquals(Polynomial.roots(c, 1.5, 2.5).length, 1)
     assertEquals(Polynomial.roots(IArray(1.0, 0.0, 1.0), -10, 10), Nil) // x² + 1

@@ -26,10 +26,14 @@ class MeshSuite extends munit.FunSuite with Approx:
 
   private val camera =
     """<camera><location x="0" y="0.5" z="-4"/><lookat x="0" y="0.3" z="0"/></camera><light><location x="-2" y="3" z="-4"/></light>"""
-  private def scene(body: String, obj: String): Scene =
-    SceneXml
-      .parse(s"<scene>$camera$body</scene>", sources(obj))
-      .fold(e => fail(e.describe), identity)
+  private def scene(body: String, obj: String)(using munit.Location): Scene =
+    val xml  = s"<scene>$camera$body</scene>"
+    val read = SceneXml.parse(xml, sources(obj)).fold(e => fail(e.describe), identity)
+    tracer.testkit.SceneSchema
+      .validate(xml)
+      .left
+      .foreach(why => fail(s"docs/scene.xsd refuses the scene: $why"))
+    read
 
   private val quad = "v -1 0 0\nv 1 0 0\nv 1 1.5 0\nv -1 1.5 0\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n"
 

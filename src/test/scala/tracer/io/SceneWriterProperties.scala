@@ -178,18 +178,82 @@ class SceneWriterProperties extends ScalaCheckSuite:
         case (x, y) => x == y
       }
 
-  test(
-    "a mesh triangle with texture coordinates or smooth normals is refused, not written without them"
-  ):
-    val t      = Triangle(Vec3.Zero, Vec3.UnitX, Vec3.UnitY)
-    val corner = SurfaceCoordinates(0, 0)
-    for triangle <- List(
-        t.copy(textureCorners = Some((corner, corner, corner))),
-        t.copy(cornerNormals = Some((Vec3.UnitZ, Vec3.UnitZ, Vec3.UnitZ)))
+  /** A mesh's triangle as the reader builds it: smooth normals or texture coordinates at its
+    * corners (or both), which no element but `<mesh>` carries.
+    */
+  private val meshTriangle = for
+    t      <- triangle
+    corner <- Gen.zip(Gen.choose(0.0, 1.0), Gen.choose(0.0, 1.0)).map(SurfaceCoordinates(_, _))
+    normal <- unitVec
+    kind   <- Gen.choose(0, 2)
+  yield
+    val flat = t.shape match
+      case f: Triangle => f
+      case _           => Triangle(Vec3.Zero, Vec3.UnitX, Vec3.UnitY)
+    val uv      = Option.when(kind != 1)((corner, corner, corner))
+    val normals = Option.when(kind != 0)((normal, normal, normal))
+    t.copy(shape = flat.copy(textureCorners = uv, cornerNormals = normals))
+
+  private def unwritable(o: SceneObject): Boolean = o.shape match
+    case t: Triangle => t.textureCorners.isDefined || t.cornerNormals.isDefined
+    case _           => false
+
+  test("a scene the reader built from a smooth or a textured mesh is told apart, not thrown"):
+    val dir = java.nio.file.Files.createTempDirectory("writer")
+    try
+      java.nio.file.Files
+        .writeString(dir.resolve("plain.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+      java.nio.file.Files.writeString(
+        dir.resolve("m.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 -1\nf 1/1/1 2/2/1 3/3/1\n"
       )
-    do
-      val scene = Scene(Camera(Vec3(0, 0, -5), Vec3.Zero), objects = List(SceneObject(triangle)))
-      intercept[IllegalArgumentException](SceneWriter.write(scene))
+      val sources            = SceneSources(textures, MeshFiles.loader(dir))
+      def read(mesh: String) = SceneXml
+        .parse(
+          s"""<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>$mesh</scene>""",
+          sources
+        )
+        .fold(e => fail(e.describe), identity)
+      val smooth   = read("""<mesh file="m.obj" smooth="true"/>""")
+      val textured =
+        read("""<mesh file="m.obj"><surface><texture file="t.ppm"/></surface></mesh>""")
+      val flat = read("""<mesh file="plain.obj"/>""")
+      assertEquals(
+        SceneWriter.write(smooth).left.map(_.take(45)),
+        Left("a triangle with smooth normals at its corners")
+      )
+      assertEquals(
+        SceneWriter.write(textured).left.map(_.take(50)),
+        Left("a triangle with texture coordinates at its corners")
+      )
+      // A mesh without normals or texture coordinates is plain triangles: written, and read back.
+      val text = SceneWriter.write(flat).fold(fail(_), identity)
+      assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(flat.objects))
+    finally
+      java.nio.file.Files
+        .walk(dir)
+        .sorted(java.util.Comparator.reverseOrder())
+        .forEach(java.nio.file.Files.delete)
+
+  test("a number that is not finite is told, naming its field, not written or thrown"):
+    val camera = Camera(Vec3(0, 0, -5), Vec3.Zero)
+    val cases  = List(
+      Scene(camera, lights = List(Light(Vec3(Double.NaN, 0, 0)))) ->
+        "scene.lights(0).location.x is NaN",
+      Scene(
+        camera,
+        objects = List(
+          SceneObject(Sphere(Vec3.Zero, 1)),
+          SceneObject(Sphere(Vec3(0, Double.PositiveInfinity, 0), 1))
+        )
+      ) -> "scene.objects(1).shape.centre.y is Infinity",
+      Scene(camera, lights = List(Light(Vec3.Zero, Colour(1, Double.NaN, 1)))) ->
+        "scene.lights(0).colour.g is NaN"
+    )
+    for (scene, words) <- cases do
+      SceneWriter.write(scene) match
+        case Left(why) => assert(why.startsWith(words), why)
+        case Right(t)  => fail(s"wrote $t")
 
   test("a split union's children, placed twice, are written as their union and read back the same"):
     val xml = """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
@@ -202,12 +266,22 @@ class SceneWriterProperties extends ScalaCheckSuite:
       |</union></scene>""".stripMargin
     val scene = SceneXml.parse(xml, textures).fold(e => fail(e.describe), identity)
     assertEquals(scene.objects.length, 2)
-    val text = SceneWriter.write(scene)
+    val text = SceneWriter.write(scene).fold(fail(_), identity)
     assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
+
+  property("write(scene) tells exactly the smooth and textured mesh triangles it cannot write"):
+    forAll(scene, Gen.listOf(meshTriangle), Gen.choose(0, 10)) { (s, meshes, at) =>
+      val mixed = s.copy(objects = s.objects.take(at) ++ meshes ++ s.objects.drop(at))
+      SceneWriter.write(mixed) match
+        case Left(why) =>
+          assert(meshes.nonEmpty, why)
+          assert(why.startsWith("a triangle with "), why)
+        case Right(text) => assert(meshes.isEmpty && !mixed.objects.exists(unwritable), text)
+    }
 
   property("parse(write(scene)) = scene"):
     forAll(scene) { s =>
-      val text = SceneWriter.write(s)
+      val text = SceneWriter.write(s).fold(fail(_), identity)
       SceneXml.parse(text, textures) match
         case Right(back) =>
           // The message names the first object that differs, not the whole scene.

@@ -5,6 +5,7 @@ import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
 import tracer.scene.*
+import tracer.testkit.SceneSchema
 import tracer.testkit.Scenes.firstShape
 
 /** The XML scene format of scene-format.md: what it accepts and how it reports what it does not. */
@@ -19,9 +20,12 @@ class SceneXmlSuite extends munit.FunSuite:
 
   override def beforeEach(context: BeforeEach): Unit = loaded.clear()
 
-  private def parse(xml: String)        = SceneXml.parse(xml, textures)
-  private def scene(xml: String): Scene = parse(xml).fold(e => fail(e.describe), identity)
-  private val camera                    =
+  private def parse(xml: String)                              = SceneXml.parse(xml, textures)
+  private def scene(xml: String)(using munit.Location): Scene =
+    val read = parse(xml).fold(e => fail(e.describe), identity)
+    SceneSchema.validate(xml).left.foreach(why => fail(s"docs/scene.xsd refuses the scene: $why"))
+    read
+  private val camera =
     """<camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>"""
   private def withCamera(body: String) = s"<scene>$camera$body</scene>"
 

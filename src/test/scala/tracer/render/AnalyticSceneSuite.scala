@@ -22,8 +22,12 @@ class AnalyticSceneSuite extends munit.FunSuite:
   private def bytes(c: Colour)                   = List(c.r, c.g, c.b).map(Colour.quantise(_, 255))
 
   // A wall z = 0 facing the camera, lit head-on by a light straight behind the eye: cos φ = 1 at
-  // the centre. Two-by-two pixels put the sample points at the centre ±0.25 W, so |rn · Sd| < 1.
+  // the centre. The tests that look at one pixel render a 1 × 1 picture, whose one ray goes
+  // through the centre of the image plane and meets the wall at the origin.
   private val wall = Plane.at(-Vec3.UnitZ, 0)
+
+  test("the renderer's ray offset is the one the geometry tests check for shadow acne"):
+    assertEquals(Shading.Epsilon, tracer.testkit.Offsets.Ray)
 
   test("an empty scene is the background everywhere"):
     val b = render(Scene(camera, background = Colour(0.2, 0.4, 0.6)))
@@ -121,7 +125,12 @@ class AnalyticSceneSuite extends munit.FunSuite:
     assertEquals(level(0), 0)
     assertEquals(level(1), Colour.quantise(0.5 * 0.4, 255))
     assertEquals(level(2), level(1)) // the second bounce meets the black front mirror: adds 0·…
-    assert(level(3) > level(2), s"${level(3)} ≤ ${level(2)}")
+    // Each bounce adds half of what it sees: the back wall's 0.4 at odd bounces, the black front
+    // mirror's 0 at even ones. Depth 3: 0.5·(0.4 + 0.5·(0 + 0.5·0.4)) = 0.25; depth 4 the same;
+    // depth 5: 0.5·(0.4 + 0.25·(0.4 + 0.25·0.4)) = 0.2625.
+    assertEquals(level(3), Colour.quantise(0.25, 255))
+    assertEquals(level(4), level(3))
+    assertEquals(level(5), Colour.quantise(0.2625, 255))
 
   test("a texture gives the surface colour at the hit"):
     val texture = Texture(

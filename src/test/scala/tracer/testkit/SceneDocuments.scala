@@ -5,7 +5,8 @@ import tracer.io.SceneXml
 import tracer.scene.Scene
 
 /** Helpers for suites that read scene documents written inline: textures are a white texel, a
-  * body gets a camera, and errors are checked for their line, element and words.
+  * body gets a camera, errors are checked for their line, element and words, and every scene read
+  * whole is checked against the schema too.
   */
 trait SceneDocuments extends munit.FunSuite:
 
@@ -16,8 +17,13 @@ trait SceneDocuments extends munit.FunSuite:
   def parse(xml: String): Either[tracer.io.SceneError, Scene] =
     SceneXml.parse(xml, _ => Right(texel))
 
-  /** The scene `xml` describes; the test fails if it is refused. */
-  def scene(xml: String): Scene = parse(xml).fold(e => fail(e.describe), identity)
+  /** The scene `xml` describes; the test fails if it is refused, or if `docs/scene.xsd` does not
+    * find it valid (so every scene a suite reads is also a test of the schema).
+    */
+  def scene(xml: String)(using munit.Location): Scene =
+    val read = parse(xml).fold(e => fail(e.describe), identity)
+    SceneSchema.validate(xml).left.foreach(why => fail(s"docs/scene.xsd refuses the scene: $why"))
+    read
 
   /** A document holding `body` after a camera on line 2 (so `body` starts on line 3). */
   def withCamera(body: String): String =

@@ -21,7 +21,10 @@ class SceneLoadBench:
   var document: Array[Byte] = Array.emptyByteArray
 
   @Setup def setup(): Unit =
-    document = SceneWriter.write(BenchScenes.scene("mesh-20000")).getBytes(UTF_8)
+    // Why: as in load, a benchmark has no caller to hand an error to.
+    document = SceneWriter
+      .write(BenchScenes.scene("mesh-20000"))
+      .fold(why => throw IllegalStateException(why), _.getBytes(UTF_8))
     println(s"\nSceneLoadBench: the document has ${document.length} bytes")
 
   /** Parses the document into a scene. */

@@ -1,5 +1,6 @@
 package tracer.demo
 
+import tracer.Eithers
 import java.nio.file.{Files, Path}
 import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour}
@@ -59,9 +60,10 @@ object Animation:
   final case class Textures(planet: Texture, checker: Texture)
 
   /** Writes the movie's frame scenes (`frame-0001.xml`, …), their textures and `frames.txt`, the
-    * list that `scripts/movie.sh` reads, into `dir`.
+    * list that `scripts/movie.sh` reads, into `dir`; or says which frame the scene format cannot
+    * hold (see [[tracer.io.SceneWriter]]).
     */
-  def writeFrames(dir: Path): Unit =
+  def writeFrames(dir: Path): Either[String, Unit] =
     Files.createDirectories(dir)
     ProceduralTextures.writeGallery(dir.resolve("textures"))
     // The frames only name their textures: the tracer loads them when it renders each frame.
@@ -70,23 +72,26 @@ object Animation:
       Texture(placeholder, "textures/planet.ppm"),
       Texture(placeholder, "textures/checker.png")
     )
-    val names = (0 until FrameCount).map { i =>
+    val written = Eithers.traverse((0 until FrameCount).toList) { i =>
       val name = f"frame-${i + 1}%04d.xml"
-      Files.writeString(
-        dir.resolve(name),
-        SceneWriter.write(frame(i.toDouble / FramesPerSecond, textures))
-      )
-      name
+      SceneWriter
+        .write(frame(i.toDouble / FramesPerSecond, textures))
+        .map(text => Files.writeString(dir.resolve(name), text))
+        .map(_ => name)
     }
-    Files.writeString(
-      dir.resolve("frames.txt"),
-      names.mkString("# The frames of tracer's movie, in order.\n", "\n", "\n")
-    ): Unit
+    written.map(names =>
+      Files.writeString(
+        dir.resolve("frames.txt"),
+        names.mkString("# The frames of tracer's movie, in order.\n", "\n", "\n")
+      ): Unit
+    )
 
   /** Writes the frames into the directory named by the first argument (default `target/movie`). */
-  def main(args: Array[String]): Unit = writeFrames(
-    Path.of(args.headOption.getOrElse("target/movie"))
-  )
+  def main(args: Array[String]): Unit =
+    writeFrames(Path.of(args.headOption.getOrElse("target/movie"))).left.foreach { why =>
+      System.err.println(s"Animation: $why")
+      sys.exit(1)
+    }
 
   /** Half a turn around the scene, the eye rising a little. */
   private def camera(phase: Double): Camera =

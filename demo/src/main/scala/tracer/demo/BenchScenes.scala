@@ -1,5 +1,6 @@
 package tracer.demo
 
+import tracer.Eithers
 import java.nio.file.{Files, Path}
 import tracer.geometry.{Plane, Sphere, Triangle}
 import tracer.image.Colour
@@ -24,31 +25,41 @@ object BenchScenes:
     case _         => mesh(Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt)
 
   /** Writes `NAME.xml` and `NAME.pov` for every scene into `dir`; the meshes' XML names their
-    * triangles in `NAME.obj` through a `<mesh>` element, as a user would.
+    * triangles in `NAME.obj` through a `<mesh>` element, as a user would; or says which scene
+    * the scene format cannot hold.
     */
-  def writeAll(dir: Path, depth: Int = CameraConfig.DefaultDepth): Unit =
+  def writeAll(dir: Path, depth: Int = CameraConfig.DefaultDepth): Either[String, Unit] =
     Files.createDirectories(dir)
-    names.foreach { name =>
-      val s = scene(name)
-      Files.writeString(dir.resolve(s"$name.pov"), PovRay.write(s, depth))
-      if name.startsWith("mesh-") then
-        val n = Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt
-        Files.writeString(
-          dir.resolve(s"$name.obj"),
-          Models.obj(grid(n), s"$name: a terrain of ${2 * n * n} triangles")
-        )
-        val withoutMesh = SceneWriter.write(s.copy(objects = s.objects.take(1)))
-        val mesh        =
-          s"""  <mesh file="$name.obj"><surface diffuse="0.9" reflection="0.1"><colour r="0.75" g="0.6" b="0.35"/></surface></mesh>\n"""
-        Files.writeString(
-          dir.resolve(s"$name.xml"),
-          withoutMesh.replace("</scene>", mesh + "</scene>")
-        )
-      else Files.writeString(dir.resolve(s"$name.xml"), SceneWriter.write(s))
-    }
+    Eithers
+      .traverse(names.toList) { name =>
+        val s = scene(name)
+        Files.writeString(dir.resolve(s"$name.pov"), PovRay.write(s, depth))
+        if name.startsWith("mesh-") then
+          val n = Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt
+          Files.writeString(
+            dir.resolve(s"$name.obj"),
+            Models.obj(grid(n), s"$name: a terrain of ${2 * n * n} triangles")
+          )
+          val mesh =
+            s"""  <mesh file="$name.obj"><surface diffuse="0.9" reflection="0.1"><colour r="0.75" g="0.6" b="0.35"/></surface></mesh>\n"""
+          SceneWriter
+            .write(s.copy(objects = s.objects.take(1)))
+            .map(withoutMesh =>
+              Files.writeString(
+                dir.resolve(s"$name.xml"),
+                withoutMesh.replace("</scene>", mesh + "</scene>")
+              ): Unit
+            )
+        else SceneWriter.write(s).map(Files.writeString(dir.resolve(s"$name.xml"), _): Unit)
+      }
+      .map(_ => ())
 
   /** Writes the scenes into the directory named by the first argument (default `scenes/bench`). */
-  def main(args: Array[String]): Unit = writeAll(Path.of(args.headOption.getOrElse("scenes/bench")))
+  def main(args: Array[String]): Unit =
+    writeAll(Path.of(args.headOption.getOrElse("scenes/bench"))).left.foreach { why =>
+      System.err.println(s"BenchScenes: $why")
+      sys.exit(1)
+    }
 
   private val camera =
     Camera(Vec3(0, 2.2, -7), Vec3(0, 0.6, 0), zoom = 1.2, width = 1.6, height = 0.9)

@@ -16,4 +16,5 @@ class AnimationSuite extends munit.FunSuite:
       1.0,
       Animation.Textures(placeholder, placeholder.copy(name = "textures/checker.png"))
     )
-    assert(SceneXml.parse(SceneWriter.write(frame), textures).isRight)
+    val text = SceneWriter.write(frame).fold(fail(_), identity)
+    assert(SceneXml.parse(text, textures).isRight, text)

@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit
 import tracer.cli.Main
 import tracer.image.{Bitmap, Ppm}
 import tracer.io.{SceneWriter, SceneXml}
+import tracer.testkit.Tools
 
 /** An independent renderer agrees: POV-Ray 3.7, given the same scenes through
   * [[tracer.demo.PovRay]], draws the same pictures to within rounding and a few edge pixels —
@@ -14,13 +15,12 @@ import tracer.io.{SceneWriter, SceneXml}
   */
 class PovRaySuite extends munit.FunSuite:
 
-  private val povray = Path.of("/usr/bin/povray")
+  private val povray = Tools.find("povray").getOrElse(Path.of("/usr/bin/povray"))
 
+  // The only independent oracle of versions 1 to 3: skipped on a machine without POV-Ray, but
+  // in CI its absence fails the suite rather than passing it in silence.
   override def beforeAll(): Unit =
-    assume(
-      Files.isExecutable(povray),
-      "needs POV-Ray (apt-get install povray; .ci/run installs it)"
-    )
+    Tools.require("povray", "apt-get install povray"): Unit
 
   private val size = List("-x", "160", "-y", "90")
 
@@ -62,21 +62,30 @@ class PovRaySuite extends munit.FunSuite:
     )
     Ppm.read(Files.readAllBytes(dir.resolve("theirs.ppm"))).fold(fail(_), identity)
 
-  /** Renders the scene written in `dir/scene.xml` with both renderers and checks that at least
-    * `share` of the samples are within 2 levels of each other.
+  /** Renders the scene written in `dir/scene.xml` with both renderers and checks the share of the
+    * samples more than 2 levels apart against `measured`, the share (in percent) measured on this
+    * scene: at most twice that, and at least 0.01% is allowed (the margin: another JVM's `sin`
+    * and `acos` may move a few edge samples; a real change moves many more).
     */
-  private def agree(dir: Path, share: Double, options: List[String] = Nil, gamma: String = "1.0") =
+  private def agree(
+      dir: Path,
+      measured: Double,
+      options: List[String] = Nil,
+      gamma: String = "1.0"
+  ) =
     val (a, b) = pictures(dir, options, gamma)
     assertEquals((a.width, a.height), (b.width, b.height))
     val samples = for x <- 0 until a.width; y <- 0 until a.height; c <- 0 until 3
     yield Math.abs(a.sample(x, y, c) - b.sample(x, y, c))
-    val close = samples.count(_ <= 2).toDouble / samples.length
+    val apart = 100.0 * samples.count(_ > 2) / samples.length
     val mse   = samples.map(d => d.toDouble * d).sum / samples.length
     val psnr  = if mse == 0 then Double.PositiveInfinity else 10 * Math.log10(255.0 * 255 / mse)
+    val limit = Math.max(2 * measured, 0.01)
     // Shadow and silhouette edges may fall a pixel apart: the two renderers round differently.
     assert(
-      close >= share,
-      f"only ${100 * close}%.2f%% of samples within 2 levels (PSNR $psnr%.1f dB); largest difference ${samples.max}"
+      apart <= limit,
+      f"$apart%.3f%% of samples more than 2 levels apart, measured $measured%%, allowed $limit%.3f%% " +
+        f"(PSNR $psnr%.1f dB); largest difference ${samples.max}"
     )
 
   /** Our picture of `dir/scene.xml` with `options`, and POV-Ray's of its twin (at the same
@@ -88,28 +97,46 @@ class PovRaySuite extends munit.FunSuite:
     val twin  = PovRay.write(scene, depth.getOrElse(5), quick = options.contains("-q"))
     (ours(dir, options), theirs(twin, dir, gamma))
 
-  /** The version 3 criterion: PSNR ≥ 40 dB, and at most 0.5% of the pixels with a channel more
-    * than 8 levels apart.
+  /** The version 3 criterion, against what was measured on this scene: PSNR at least 3 dB below
+    * `measuredPsnr` (capped at 80 dB, for pictures measured identical), and at most twice
+    * `measuredOff` (in percent, at least 0.05%) of the pixels with a channel more than 8 levels
+    * apart. The spec's floor (40 dB, 0.5%) holds a fortiori.
     */
-  private def closeTo(dir: Path, options: List[String], gamma: String) =
+  private def closeTo(
+      dir: Path,
+      options: List[String],
+      gamma: String,
+      measuredPsnr: Double,
+      measuredOff: Double
+  ) =
     val (a, b) = pictures(dir, options, gamma)
     assertEquals((a.width, a.height), (b.width, b.height))
     val pixels = for x <- 0 until a.width; y <- 0 until a.height
     yield (0 until 3).map(c => Math.abs(a.sample(x, y, c) - b.sample(x, y, c)))
-    val off  = pixels.count(_.max > 8).toDouble / pixels.length
-    val mse  = pixels.flatten.map(d => d.toDouble * d).sum / (3 * pixels.length)
-    val psnr = if mse == 0 then Double.PositiveInfinity else 10 * Math.log10(255.0 * 255 / mse)
-    if psnr < 40 || off > 0.005 then
+    val off      = 100.0 * pixels.count(_.max > 8) / pixels.length
+    val mse      = pixels.flatten.map(d => d.toDouble * d).sum / (3 * pixels.length)
+    val psnr     = if mse == 0 then Double.PositiveInfinity else 10 * Math.log10(255.0 * 255 / mse)
+    val minPsnr  = Math.min(measuredPsnr, 80) - 3
+    val maxOff   = Math.max(2 * measuredOff, 0.05)
+    val accepted = psnr >= minPsnr && off <= maxOff && psnr >= 40 && off <= 0.5
+    if !accepted then
       val keep = Path.of("target", "povray-v3")
       Files.createDirectories(keep)
       val _ = Files.copy(dir.resolve("ours.ppm"), keep.resolve(s"${dir.getFileName}-ours.ppm"))
       val _ = Files.copy(dir.resolve("theirs.ppm"), keep.resolve(s"${dir.getFileName}-theirs.ppm"))
     assert(
-      psnr >= 40 && off <= 0.005,
-      f"PSNR $psnr%.1f dB, ${100 * off}%.2f%% of pixels off by > 8"
+      accepted,
+      f"PSNR $psnr%.1f dB (measured $measuredPsnr%.1f, allowed from $minPsnr%.1f), $off%.3f%% of " +
+        f"pixels off by > 8 (measured $measuredOff%.3f%%, allowed $maxOff%.3f%%)"
     )
 
-  private def version3(name: String, options: List[String] = Nil, gamma: String = "1.0") =
+  private def version3(
+      name: String,
+      psnr: Double,
+      off: Double,
+      options: List[String] = Nil,
+      gamma: String = "1.0"
+  ) =
     inTemporaryDirectory { dir =>
       val xml = new String(getClass.getResourceAsStream(s"/povray/$name.xml").readAllBytes, "UTF-8")
       Files.writeString(dir.resolve("scene.xml"), xml)
@@ -120,67 +147,76 @@ class PovRaySuite extends munit.FunSuite:
         .filterNot(_.startsWith("vn "))
         .map(l => if l.startsWith("f ") then l.replaceAll("/(\\d*)/\\d+", "/$1") else l)
       Files.writeString(dir.resolve("bare.obj"), bare.mkString("", "\n", "\n"))
-      closeTo(dir, options, gamma)
+      closeTo(dir, options, gamma, psnr, off)
     }
 
+  // The measured PSNR (dB) and share of pixels off by more than 8 levels (%) of each scene, on
+  // OpenJDK 17 and Debian's POV-Ray 3.7 (demo/testOnly tracer.demo.PovRaySuite, docs/testing.md).
   test("version 3's solids, placed, and the checker pattern match POV-Ray's"):
-    version3("solids")
+    version3("solids", psnr = 55.78, off = 0.021)
 
   test("CSG (nested, inherited surfaces, cut faces, placed) matches POV-Ray's"):
-    version3("csg")
+    version3("csg", psnr = 55.72, off = 0.049)
 
   test("glass solids and a glass CSG match POV-Ray's at -r 5 and -r 2"):
-    version3("glass-solids", List("-r", "5"))
-    version3("glass-solids", List("-r", "2"))
+    version3("glass-solids", psnr = 45.60, off = 0.042, List("-r", "5"))
+    version3("glass-solids", psnr = 65.86, off = 0.007, List("-r", "2"))
 
   test("inherited and own checkers sit where POV-Ray puts them, under placed children too"):
-    version3("inherit")
+    version3("inherit", psnr = 86.70, off = 0)
 
   test("quick mode on version 3 scenes matches POV-Ray's eye light"):
-    version3("solids", List("-q"))
-    version3("csg", List("-q"))
+    version3("solids", psnr = Double.PositiveInfinity, off = 0, List("-q"))
+    version3("csg", psnr = Double.PositiveInfinity, off = 0, List("-q"))
 
   test("-g srgb on a version 3 scene matches POV-Ray's File_Gamma=sRGB"):
-    version3("csg", List("-g", "srgb"), "sRGB")
+    version3("csg", psnr = 58.37, off = 0.056, List("-g", "srgb"), "sRGB")
 
   test("smooth=\"auto\" on a mesh without normals matches POV-Ray's smooth triangles"):
-    version3("auto")
+    version3("auto", psnr = 48.55, off = 0.299)
 
   private def inTemporaryDirectory(body: Path => Unit): Unit =
     val dir = Files.createTempDirectory("povray")
     try body(dir)
     finally Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
 
-  for name <- List("few", "spheres", "mesh-5000") do
-    test(s"the $name benchmark scene matches POV-Ray's picture in 99.5% of its samples"):
+  // The measured share of samples more than 2 levels apart (%), as for version 3.
+  for (name, measured) <- List("few" -> 0.023, "spheres" -> 0.248, "mesh-5000" -> 0.0) do
+    test(s"the $name benchmark scene matches POV-Ray's picture (measured $measured% apart)"):
       inTemporaryDirectory { dir =>
-        Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(BenchScenes.scene(name)))
-        agree(dir, 0.995)
+        val text = SceneWriter.write(BenchScenes.scene(name)).fold(fail(_), identity)
+        Files.writeString(dir.resolve("scene.xml"), text)
+        agree(dir, measured)
       }
 
-  private def version2(name: String, options: List[String] = Nil, gamma: String = "1.0") =
+  private def version2(
+      name: String,
+      measured: Double,
+      options: List[String] = Nil,
+      gamma: String = "1.0"
+  ) =
     inTemporaryDirectory { dir =>
       val xml = new String(getClass.getResourceAsStream(s"/povray/$name.xml").readAllBytes, "UTF-8")
       Files.writeString(dir.resolve("scene.xml"), xml)
       Files.writeString(dir.resolve("coarse.obj"), Models.obj(Models.icosphere(1), "coarse"))
-      agree(dir, 0.99, options, gamma)
+      agree(dir, measured, options, gamma)
     }
 
   test("highlights (phong, phong-size, specular, roughness) match POV-Ray's"):
-    version2("highlights")
+    version2("highlights", 0.160)
 
   test("glass (transmit, ior, total internal reflection, shadows through it) matches POV-Ray's"):
-    version2("glass")
+    version2("glass", 0.074)
 
   test("area lights' soft shadows match POV-Ray's"):
-    version2("area")
+    version2("area", 0.058)
 
   test("version 4's fade on point and area lights matches POV-Ray's fade_distance and fade_power"):
     version2("fade")
 
   test("smooth meshes match POV-Ray's smooth triangles"):
-    version2("smooth")
+    version2("smooth", 0.046)
 
   test("-g srgb matches POV-Ray's File_Gamma=sRGB, and -g 2.2 its File_Gamma=2.2"):
-    version2("highlights", List("-g", "srgb"), "sRGB")
-    version2("glass", List("-g", "2.2"), "2.2")
+    version2("highlights", 0.164, List("-g", "srgb"), "sRGB")
+    version2("glass", 0.074, List("-g", "2.2"), "2.2")
