@@ -20,6 +20,12 @@ final class Bvh(shapes: IndexedSeq[Shape]):
   /** The number of nodes, for tests and benchmarks. */
   def nodeCount: Int = tree.size
 
+  /** The number of nodes on the longest path from the root to a leaf (0 for no tree), for tests. */
+  def depth: Int =
+    def below(n: Int): Int =
+      if links(2 * n + 1) > 0 then 1 else 1 + Math.max(below(links(2 * n)), below(links(2 * n) + 1))
+    if tree.size == 0 then 0 else below(0)
+
   /** The index in `shapes` of the shape the ray from (ox, oy, oz) in unit direction (dx, dy, dz)
     * hits first, competing with a candidate already found: shape `limitIndex` at distance `limit`
     * (use `Int.MaxValue` and +∞ for none). Ties go to the lower index, as in a plain loop over all
