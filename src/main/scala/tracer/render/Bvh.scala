@@ -66,7 +66,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             var k   = links(2 * node)
             val end = k + count
             while k < end do
-              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz)
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
               if t <= bestT && t < Double.PositiveInfinity then
                 val i = prims.index(k)
                 if t < bestT || i < best then
@@ -134,7 +134,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
           var k   = links(2 * node)
           val end = k + count
           while k < end && !hit do
-            hit = Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz) < limit
+            hit =
+              Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz, query.crossings) < limit
             k += 1
         else
           val left = links(2 * node)
@@ -216,6 +217,9 @@ object Bvh:
 final class Query:
   private[render] val nodes   = new Array[Int](Bvh.StackSize)
   private[render] val entries = new Array[Double](Bvh.StackSize)
+
+  /** Scratch for the general route's crossings (the solids' and combinations' kernel). */
+  private[render] val crossings = tracer.geometry.CrossingBuffer()
 
   /** The distance along the ray of the last nearest hit found (+∞ for none). */
   // Why: the second result of `nearest`, written instead of allocating a pair per ray.
