@@ -130,11 +130,13 @@ object Kernel:
         buffer
       ) / s
     case other: (Box | Cone | Torus | Csg) =>
-      if collect(other, ox, oy, oz, dx, dy, dz, buffer, 0) > 0 then buffer.t(0)
+      if collect(other, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false) > 0 then buffer.t(0)
       else Double.PositiveInfinity
 
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
-    * returns the index after the last. The same crossings bit for bit as the reference's list.
+    * returns the index after the last. The same crossings bit for bit as the reference's list;
+    * with `normals` false their normals are left unset (Perf: a distance needs only the ts, and
+    * the cone's, torus's and placement's normals cost a square root each).
     */
   def collect(
       shape: Shape,
@@ -145,7 +147,8 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      from: Int
+      from: Int,
+      normals: Boolean = true
   ): Int = shape match
     case s: Sphere =>
       val ocx  = s.centre.x - ox
@@ -156,8 +159,8 @@ object Kernel:
       if t2hc < 0 then from
       else
         val half = Math.sqrt(t2hc)
-        val k    = sphereCrossing(s, tca - half, ox, oy, oz, dx, dy, dz, buffer, from)
-        sphereCrossing(s, tca + half, ox, oy, oz, dx, dy, dz, buffer, k)
+        val k    = sphereCrossing(s, tca - half, ox, oy, oz, dx, dy, dz, buffer, from, normals)
+        sphereCrossing(s, tca + half, ox, oy, oz, dx, dy, dz, buffer, k, normals)
     case p: Plane =>
       val t = planeDistance(p, ox, oy, oz, dx, dy, dz)
       if t < Double.PositiveInfinity then
@@ -169,8 +172,8 @@ object Kernel:
         buffer.put(from, t, tr.normal.x, tr.normal.y, tr.normal.z, 0); from + 1
       else from
     case b: Box    => box(b, ox, oy, oz, dx, dy, dz, buffer, from)
-    case c: Cone   => cone(c, ox, oy, oz, dx, dy, dz, buffer, from)
-    case t: Torus  => torus(t, ox, oy, oz, dx, dy, dz, buffer, from)
+    case c: Cone   => cone(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
+    case t: Torus  => torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case p: Placed =>
       val m   = p.back
       val lx  = m(0) * dx + m(1) * dy + m(2) * dz
@@ -189,23 +192,25 @@ object Kernel:
         ly / s,
         lz / s,
         buffer,
-        from
+        from,
+        normals
       )
       // Each crossing brought back: t / stretch, the normal by (M⁻¹)ᵀ, normalised.
       // Why: a loop over the crossings just written, in place.
       var k = from
       while k < end do
-        val nx = buffer.nx(k); val ny = buffer.ny(k); val nz = buffer.nz(k)
-        val wx = m(0) * nx + m(3) * ny + m(6) * nz
-        val wy = m(1) * nx + m(4) * ny + m(7) * nz
-        val wz = m(2) * nx + m(5) * ny + m(8) * nz
-        val l  = Math.sqrt(wx * wx + wy * wy + wz * wz)
         buffer.t(k) = buffer.t(k) / s
-        if l > 0 && l < Double.PositiveInfinity then
-          buffer.nx(k) = wx / l; buffer.ny(k) = wy / l; buffer.nz(k) = wz / l
+        if normals then
+          val nx = buffer.nx(k); val ny = buffer.ny(k); val nz = buffer.nz(k)
+          val wx = m(0) * nx + m(3) * ny + m(6) * nz
+          val wy = m(1) * nx + m(4) * ny + m(7) * nz
+          val wz = m(2) * nx + m(5) * ny + m(8) * nz
+          val l  = Math.sqrt(wx * wx + wy * wy + wz * wz)
+          if l > 0 && l < Double.PositiveInfinity then
+            buffer.nx(k) = wx / l; buffer.ny(k) = wy / l; buffer.nz(k) = wz / l
         k += 1
       end
-    case c: Csg => combination(c, ox, oy, oz, dx, dy, dz, buffer, from)
+    case c: Csg => combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
 
   /** [[Shape.inside]] on the point (px, py, pz), with the reference's tolerances. */
   def inside(shape: Shape, px: Double, py: Double, pz: Double): Boolean = shape match
@@ -271,9 +276,13 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      k: Int
+      k: Int,
+      normals: Boolean
   ): Int =
-    if t > 0 then
+    if t > 0 && !normals then
+      buffer.put(k, t, 0, 0, 0, 0)
+      k + 1
+    else if t > 0 then
       val inv = 1 / s.radius
       buffer.put(
         k,
@@ -378,7 +387,8 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      from: Int
+      from: Int,
+      normals: Boolean
   ): Int =
     val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
     val wx  = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
@@ -414,8 +424,8 @@ object Kernel:
         else
           r1 = x2; r2 = x1
     var end = from
-    if roots >= 1 then end = coneSide(c, r1, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
-    if roots == 2 then end = coneSide(c, r2, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
+    if roots >= 1 then end = coneSide(c, r1, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
+    if roots == 2 then end = coneSide(c, r2, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
     if !c.open && da != 0 then
       end = coneDisc(0.0, c.baseRadius, -1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
       end = coneDisc(c.height, c.capRadius, 1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
@@ -435,10 +445,14 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      k: Int
+      k: Int,
+      normals: Boolean
   ): Int =
     val z = wa + t * da
-    if t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0 then
+    if t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0 && !normals then
+      buffer.put(k, t, 0, 0, 0, 0)
+      k + 1
+    else if t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0 then
       val ax = c.axis.x; val ay     = c.axis.y; val az     = c.axis.z
       val px = wx + dx * t; val py  = wy + dy * t; val pz  = wz + dz * t
       val pa = px * ax + py * ay + pz * az
@@ -489,7 +503,8 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      from: Int
+      from: Int,
+      normals: Boolean
   ): Int =
     val outer = tr.major + tr.minor
     val tca   = -(ox * dx + oy * dy + oz * dz)
@@ -520,7 +535,10 @@ object Kernel:
         var m   = 0
         while m < n do
           val t = c(Polynomial.ScratchLevel + Polynomial.RootsAt + m) + shift
-          if t > 0 then
+          if t > 0 && !normals then
+            buffer.put(end, t, 0, 0, 0, 0)
+            end += 1
+          else if t > 0 then
             val qx     = ox + dx * t; val qy = oy + dy * t; val qz = oz + dz * t
             val ring   = Math.sqrt(qx * qx + qz * qz)
             val scale  = if ring > 0 then tr.major / ring else 0.0
@@ -549,13 +567,14 @@ object Kernel:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer,
-      from: Int
+      from: Int,
+      normals: Boolean
   ): Int =
     // Perf: the children's crossings are written after the kept ones and compacted in place.
     var kept = from
     var i    = 0
     while i < c.parts.length do
-      val end   = collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, kept)
+      val end   = collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, kept, normals)
       val flip  = c.operation == CsgOperation.Difference && i > 0
       val first = c.partLeaves(i)
       var k     = kept

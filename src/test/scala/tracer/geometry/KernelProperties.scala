@@ -98,6 +98,18 @@ class KernelProperties extends ScalaCheckSuite:
       rays.foreach(r => assertEquals(collected(s, r), reference(s, r), s"$s $r"))
     }
 
+  property("collect without normals gives the same ts and leaves"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      rays.foreach { r =>
+        val b   = CrossingBuffer()
+        val o   = r.origin
+        val d   = r.direction
+        val end = Kernel.collect(s, o.x, o.y, o.z, d.x, d.y, d.z, b, 0, normals = false)
+        val got = (0 until end).toList.map(k => (bits(b.t(k)), b.leaf(k)))
+        assertEquals(got, reference(s, r).map(c => (c._1, c._5)), s"$s $r")
+      }
+    }
+
   property("distance is Shape.distance, bit for bit"):
     forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
       val b = CrossingBuffer()
