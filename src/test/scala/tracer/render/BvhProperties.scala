@@ -207,8 +207,8 @@ class BvhProperties extends ScalaCheckSuite:
     // without the cap the tree would be as deep as the list is long.
     val chain = (0 until 480).map(i => Sphere(Vec3(Math.pow(2, i), 0, 0), Math.pow(2, i) / 20))
     val bvh   = Bvh(chain)
-    assert(bvh.depth <= Bvh.StackSize / 2 + 1, bvh.depth.toString) // the root and 128 levels
-    assert(bvh.depth >= Bvh.StackSize / 4, s"not degenerate: depth ${bvh.depth}")
+    assert(bvh.depth <= BvhBuilder.MaxDepth + 1, bvh.depth.toString) // the root and 128 levels
+    assert(bvh.depth >= BvhBuilder.MaxDepth / 2, s"not degenerate: depth ${bvh.depth}")
     val w     = worldOf(chain)
     val q     = w.newQuery()
     val along =
@@ -224,4 +224,6 @@ class BvhProperties extends ScalaCheckSuite:
     val w       = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = spheres))
     val bvh     = Bvh(spheres.map(_.shape))
     assert(bvh.nodeCount > 100, bvh.nodeCount.toString)
+    // Collapsed four-wide: at most about a third as many nodes as the binary tree.
+    assert(bvh.wideNodeCount <= bvh.nodeCount / 2, s"${bvh.wideNodeCount} of ${bvh.nodeCount}")
     assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newQuery()), 105)
