@@ -595,6 +595,7 @@ object Kernel:
 
   /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole. */
   private def keeps(c: Csg, i: Int, px: Double, py: Double, pz: Double): Boolean =
+    // Perf: `forall` over the children as loops on their array (SolidsBench).
     c.operation match
       case CsgOperation.Union        => true
       case CsgOperation.Intersection =>
@@ -602,11 +603,14 @@ object Kernel:
         while j < c.parts.length && (j == i || inside(c.parts(j), px, py, pz)) do j += 1
         j == c.parts.length
       case CsgOperation.Difference =>
+        // Inside the first child and outside every later one, child i aside.
         var j = 0
-        while j < c.parts.length && (j == i || (if j == 0 then inside(c.parts(j), px, py, pz)
-                                                else !inside(c.parts(j), px, py, pz)))
-        do j += 1
+        while j < c.parts.length && (j == i || allows(c, j, px, py, pz)) do j += 1
         j == c.parts.length
+
+  /** In a difference, child `j` allows a point of the whole: inside it for the first, else outside. */
+  private def allows(c: Csg, j: Int, px: Double, py: Double, pz: Double): Boolean =
+    if j == 0 then inside(c.parts(j), px, py, pz) else !inside(c.parts(j), px, py, pz)
 
   /** Shape.sphereDistance on doubles. */
   private def sphereDistance(

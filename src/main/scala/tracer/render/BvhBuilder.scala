@@ -264,7 +264,8 @@ private[render] object WideTree:
           kids(best) = left
           kids(m) = left + 1
           m += 1
-      // The slots: boxes rounded outwards, then each inner child made (which reuses `kids`).
+      // Why: loops over the slots: boxes rounded outwards, then each inner child made (which
+      // reuses `kids`, so they are copied first).
       val mine = java.util.Arrays.copyOf(kids, m)
       var c    = 0
       while c < Width do
