@@ -39,6 +39,120 @@ object Polynomial:
 
   private def degree(c: IArray[Double]): Int = c.lastIndexWhere(_ != 0)
 
+  /** Doubles of scratch one level of [[rootsInto]] uses: its derivative's coefficients, its roots
+    * at `RootsAt`, the ends of its monotonic pieces at `EndsAt`.
+    */
+  val ScratchLevel: Int = 16
+
+  /** Where a level's roots start within its scratch. */
+  val RootsAt: Int = 5
+
+  /** Where a level's piece ends start within its scratch. */
+  private val EndsAt: Int = 9
+
+  /** Scratch enough for a quartic's coefficients and its four levels. */
+  val ScratchSize: Int = 6 * ScratchLevel
+
+  /** [[roots]] on a scratch array, bit for bit: the polynomial's `len` coefficients are at
+    * `s(at until at + len)`, its roots in [lo, hi] are written at `s(out + RootsAt …)` in
+    * increasing order, and their number is returned; the levels below use `s` from `out` on.
+    */
+  def rootsInto(s: Array[Double], at: Int, len: Int, lo: Double, hi: Double, out: Int): Int =
+    // Perf: the recursion of `roots` without an IArray, list or option per level; run for every
+    // ray that meets a torus's bounding sphere (Kernel, SolidsBench).
+    var n = len - 1
+    while n >= 0 && s(at + n) == 0 do n -= 1
+    if n <= 0 then 0
+    else if n == 1 then
+      val x = -s(at) / s(at + 1)
+      if x >= lo && x <= hi then
+        s(out + RootsAt) = x
+        1
+      else 0
+    else
+      // Why: loops filling this level's scratch: the derivative, the pieces' ends, the roots.
+      var k = 0
+      while k < n do
+        s(out + k) = s(at + k + 1) * (k + 1)
+        k += 1
+      val m    = rootsInto(s, out, n, lo, hi, out + ScratchLevel)
+      val ends = out + EndsAt
+      s(ends) = lo
+      k = 0
+      while k < m do
+        s(ends + 1 + k) = s(out + ScratchLevel + RootsAt + k)
+        k += 1
+      s(ends + m + 1) = hi
+      var found = 0
+      k = 0
+      while k <= m do
+        val x = rootOn(s, at, len, n, s(ends + k), s(ends + k + 1))
+        if !x.isNaN then
+          // `distinct`: a root already found (the same bits) is not written again.
+          var j    = 0
+          val bits = java.lang.Double.doubleToLongBits(x)
+          while j < found && java.lang.Double.doubleToLongBits(s(out + RootsAt + j)) != bits do
+            j += 1
+          if j == found then
+            s(out + RootsAt + found) = x
+            found += 1
+        k += 1
+      found
+
+  /** [[root]] on a scratch array: the root in [a, b], or NaN for none. */
+  private def rootOn(s: Array[Double], at: Int, len: Int, n: Int, a: Double, b: Double): Double =
+    val pa = valueOn(s, at, len, a)
+    val pb = valueOn(s, at, len, b)
+    if pa == 0 then a
+    else if pb == 0 then b
+    else if (pa < 0) == (pb < 0) then Double.NaN
+    else bisectOn(s, at, len, n, a, b, pa < 0)
+
+  /** [[value]] on a scratch array. */
+  private def valueOn(s: Array[Double], at: Int, len: Int, x: Double): Double =
+    // Perf: Horner's loop, as in value.
+    var k   = len - 1
+    var sum = 0.0
+    while k >= 0 do
+      sum = sum * x + s(at + k)
+      k -= 1
+    sum
+
+  /** [[bisect]] on a scratch array, step for step. */
+  private def bisectOn(
+      s: Array[Double],
+      at: Int,
+      len: Int,
+      n: Int,
+      a0: Double,
+      b0: Double,
+      rising: Boolean
+  ): Double =
+    // Why: a bracketing root search is a loop over two moving ends; it is local to this call.
+    var a     = a0
+    var b     = b0
+    var x     = 0.5 * (a + b)
+    var steps = 0
+    while steps < 200 && x > a && x < b do
+      val p = valueOn(s, at, len, x)
+      if p == 0 then
+        a = x
+        b = x
+      else
+        if (p < 0) == rising then a = x else b = x
+        // Perf: Horner's loop for p', as in slopeAt.
+        var k     = n
+        var slope = 0.0
+        while k >= 1 do
+          slope = slope * x + s(at + k) * k
+          k -= 1
+        val newton = if slope != 0 then x - p / slope else Double.NaN
+        x =
+          if newton > a && newton < b && Math.abs(newton - x) < 0.5 * (b - a) then newton
+          else 0.5 * (a + b)
+      steps += 1
+    if a == b then a else x
+
   /** The root of p in [a, b] where p is monotonic, if its ends differ in sign (or one is 0). */
   private def root(c: IArray[Double], n: Int, a: Double, b: Double): Option[Double] =
     val (pa, pb) = (value(c, a), value(c, b))

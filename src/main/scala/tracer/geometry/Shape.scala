@@ -207,6 +207,9 @@ final case class Placed(shape: Shape, placement: Placement) extends Shape:
   /** The placement's map. */
   def transform: Transform = placement.transform
 
+  /** M⁻¹ (row-major) and t of the placement, for the kernel's ray transform on plain doubles. */
+  private[geometry] val back: Array[Double] = Array.from(transform.backEntries)
+
 /** How a [[Csg]] combines its children. */
 enum CsgOperation:
   /** Every child: all their surfaces, inner ones included (POV-Ray's `union`, not `merge`). */
@@ -233,6 +236,10 @@ final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends S
 
   /** The number of the first leaf of each child. */
   val firstLeaves: Vector[Int] = leafCounts.scanLeft(0)(_ + _).init
+
+  /** The children and their first leaves as arrays, for the kernel's loops. */
+  private[geometry] val parts: Array[Shape]    = children.toArray
+  private[geometry] val partLeaves: Array[Int] = firstLeaves.toArray
 
 /** The total functions on shapes: intersection distance, hit details and texture coordinates. */
 object Shape:
@@ -273,15 +280,20 @@ object Shape:
       case p: Plane                                   => facingHit(t, point, p.normal, 0, ray)
       case tr: Triangle                               => facingHit(t, point, tr.normal, 0, ray)
       case other: (Box | Cone | Torus | Placed | Csg) =>
-        // The general path: the nearest crossing again, for its normal and leaf.
-        crossings(other, ray).headOption match
-          case Some(c) => facingHit(c.t, ray.at(c.t), c.normal, c.leaf, ray)
-          case None    =>
-            // Why: distance is the first crossing, so a t from it always has one (ShapeProperties);
-            // none means a caller's t that is not a hit, a bug a made-up normal would only hide.
-            throw IllegalArgumentException(
-              s"Shape.hitAt: no crossing of $other along $ray (t = $t)"
-            )
+        // The general path: the nearest crossing again, for its normal and leaf: the first of
+        // `crossings`, here from the kernel on this thread's buffer, which gives the same
+        // crossings without a list (Kernel; docs/performance.md, round 5).
+        val buffer = Kernel.scratch.get()
+        val o      = ray.origin
+        val d      = ray.direction
+        if Kernel.collect(other, o.x, o.y, o.z, d.x, d.y, d.z, buffer, 0) > 0 then
+          val first = buffer.t(0)
+          val n     = Vec3(buffer.nx(0), buffer.ny(0), buffer.nz(0))
+          facingHit(first, ray.at(first), n, buffer.leaf(0), ray)
+        else
+          // Why: distance is the first crossing, so a t from it always has one (ShapeProperties);
+          // none means a caller's t that is not a hit, a bug a made-up normal would only hide.
+          throw IllegalArgumentException(s"Shape.hitAt: no crossing of $other along $ray (t = $t)")
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector.

@@ -46,6 +46,12 @@ final class Transform private (
       Transform.product(inverseMatrix, next.inverseValues)
     )
 
+  /** M⁻¹'s entries, row-major, then t's three: what the kernels need to take a ray of the world
+    * into this transform's own space on plain doubles (`tracer.geometry.Kernel`).
+    */
+  def backEntries: IArray[Double] =
+    inverseMatrix ++ IArray(translation.x, translation.y, translation.z)
+
   private def matrixValues: IArray[Double]  = matrix
   private def inverseValues: IArray[Double] = inverseMatrix
 

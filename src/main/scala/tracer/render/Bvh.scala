@@ -16,9 +16,22 @@ final class Bvh(shapes: IndexedSeq[Shape]):
   private val boxes = tree.boxes
   private val links = tree.links
   private val prims = Primitives(shapes, tree.order)
+  private val wide  = WideTree.collapse(tree)
+  private val wb    = wide.boxes
+  private val wc    = wide.child
+  private val wn    = wide.count
+
+  /** The number of nodes of the 4-wide tree the queries walk, for tests and benchmarks. */
+  def wideNodeCount: Int = wide.size
 
   /** The number of nodes, for tests and benchmarks. */
   def nodeCount: Int = tree.size
+
+  /** The number of nodes on the longest path from the root to a leaf (0 for no tree), for tests. */
+  def depth: Int =
+    def below(n: Int): Int =
+      if links(2 * n + 1) > 0 then 1 else 1 + Math.max(below(links(2 * n)), below(links(2 * n) + 1))
+    if tree.size == 0 then 0 else below(0)
 
   /** The index in `shapes` of the shape the ray from (ox, oy, oz) in unit direction (dx, dy, dz)
     * hits first, competing with a candidate already found: shape `limitIndex` at distance `limit`
@@ -26,6 +39,198 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     * shapes. The winner's distance is left in `query.distance`.
     */
   def nearest(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      limitIndex: Int,
+      query: Query
+  ): Int =
+    // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
+    // pushed farthest first with their entry distances, so the nearest is walked next and a popped
+    // slot beyond the best hit is dropped untested; leaves test the double-precision primitives
+    // (docs/performance.md, round 5; WorldBench).
+    val stack   = query.nodes
+    val entries = query.entries
+    var best    = limitIndex
+    var bestT   = limit
+    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp =
+        if wide.size == 0 then 0
+        else push(0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, bestT, ordered = true)
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
+        if entries(sp) <= bestT then
+          val count = wn(slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val i = prims.index(k)
+                if t < bestT || i < best then
+                  bestT = t
+                  best = i
+              k += 1
+          else
+            sp = push(
+              wc(slot),
+              sp,
+              stack,
+              entries,
+              ox,
+              oy,
+              oz,
+              ix,
+              iy,
+              iz,
+              sx,
+              sy,
+              sz,
+              bestT,
+              ordered = true
+            )
+    }
+    query.distance = bestT
+    best
+
+  /** True when some indexed shape is hit by the ray (origin o, unit direction d) at a distance
+    * below `limit`; stops at the first.
+    */
+  def occluded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
+    val stack   = query.nodes
+    val entries = query.entries
+    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var hit = false
+      var sp  =
+        if wide.size == 0 then 0
+        else push(0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit, ordered = false)
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = wn(slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit =
+              Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz, query.crossings) < limit
+            k += 1
+        else
+          sp = push(
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
+      hit
+    }
+
+  /** Pushes the slots of wide node `node` whose boxes the ray enters before `limit` onto the
+    * stack above `sp`, with their entry distances; `ordered`: the farthest first, so the nearest
+    * is popped next. Returns the new stack size.
+    */
+  private inline def push(
+      node: Int,
+      sp: Int,
+      stack: Array[Int],
+      entries: Array[Double],
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double,
+      inline ordered: Boolean
+  ): Int =
+    // Why: the stack top moves as slots are pushed; an insertion sort keeps them farthest first.
+    var top = sp
+    var c   = 0
+    while c < WideTree.Width do
+      val slot = WideTree.Width * node + c
+      if wn(slot) >= 0 then
+        val t = wideEntry(24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
+        if t < Double.PositiveInfinity then
+          var j = top
+          if ordered then
+            while j > sp && entries(j - 1) < t do
+              stack(j) = stack(j - 1); entries(j) = entries(j - 1)
+              j -= 1
+          stack(j) = slot; entries(j) = t
+          top += 1
+      c += 1
+    top
+
+  /** The distance at which the ray enters the float box at `b` (a child's low x; its other
+    * coordinates 4 floats apart), or +∞ when it misses it before `limit`: the slab test of
+    * [[entry]], on the float box widened to double (exactly), near planes chosen by `sx` etc.
+    * (0 for the low side, 3 for the high: 4 × that floats on).
+    */
+  private inline def wideEntry(
+      b: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double
+  ): Double =
+    // Perf: as entry, on four floats apart: no box object, local doubles narrowed in place.
+    var tmin = 0.0
+    var tmax = limit
+    val nx   = (wb(b + 4 * sx).toDouble - ox) * ix
+    val fx   = (wb(b + 12 - 4 * sx).toDouble - ox) * ix
+    if nx > tmin then tmin = nx
+    if fx < tmax then tmax = fx
+    val ny = (wb(b + 4 + 4 * sy).toDouble - oy) * iy
+    val fy = (wb(b + 16 - 4 * sy).toDouble - oy) * iy
+    if ny > tmin then tmin = ny
+    if fy < tmax then tmax = fy
+    val nz = (wb(b + 8 + 4 * sz).toDouble - oz) * iz
+    val fz = (wb(b + 20 - 4 * sz).toDouble - oz) * iz
+    if nz > tmin then tmin = nz
+    if fz < tmax then tmax = fz
+    if tmin <= tmax then tmin else Double.PositiveInfinity
+
+  /** [[nearest]] on the binary tree the wide one was collapsed from: the same answers, kept to
+    * measure what the wide tree gains (`WorldBench`).
+    */
+  def nearestBinary(
       ox: Double,
       oy: Double,
       oz: Double,
@@ -60,7 +265,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             var k   = links(2 * node)
             val end = k + count
             while k < end do
-              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz)
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
               if t <= bestT && t < Double.PositiveInfinity then
                 val i = prims.index(k)
                 if t < bestT || i < best then
@@ -86,10 +291,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     query.distance = bestT
     best
 
-  /** True when some indexed shape is hit by the ray (origin o, unit direction d) at a distance
-    * below `limit`; stops at the first.
-    */
-  def occluded(
+  /** [[occluded]] on the binary tree, as [[nearestBinary]]. */
+  def occludedBinary(
       ox: Double,
       oy: Double,
       oz: Double,
@@ -128,7 +331,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
           var k   = links(2 * node)
           val end = k + count
           while k < end && !hit do
-            hit = Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz) < limit
+            hit =
+              Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz, query.crossings) < limit
             k += 1
         else
           val left = links(2 * node)
@@ -201,8 +405,10 @@ final class Bvh(shapes: IndexedSeq[Shape]):
 
 /** Construction constants of [[Bvh]]. */
 object Bvh:
-  /** The scratch stack size a query needs: deeper than any tree the builder makes. */
-  val StackSize: Int = 256
+  /** The scratch stack size a query needs: a wide node pushes at most four slots for the one it
+    * pops, at most [[BvhBuilder.MaxDepth]] + 1 deep, so 3 × 129 + 4 slots at most.
+    */
+  val StackSize: Int = 512
 
 /** Scratch space for one thread's queries of a [[World]] or [[Bvh]], and the distance of the last
   * nearest hit found with it. Not thread-safe: each render task makes its own (`World.newQuery`).
@@ -210,6 +416,9 @@ object Bvh:
 final class Query:
   private[render] val nodes   = new Array[Int](Bvh.StackSize)
   private[render] val entries = new Array[Double](Bvh.StackSize)
+
+  /** Scratch for the general route's crossings (the solids' and combinations' kernel). */
+  private[render] val crossings = tracer.geometry.CrossingBuffer()
 
   /** The distance along the ray of the last nearest hit found (+∞ for none). */
   // Why: the second result of `nearest`, written instead of allocating a pair per ray.

@@ -111,7 +111,7 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
       else (2, cl2, ch2 - cl2)
     def leaf(): Unit =
       links(2 * node) = start; links(2 * node + 1) = n
-    if n <= MaxLeaf / 2 || extent <= 0 || depth >= Bvh.StackSize / 2 then leaf()
+    if n <= MaxLeaf / 2 || extent <= 0 || depth >= MaxDepth then leaf()
     else
       def bin(k: Int): Int =
         Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
@@ -200,3 +200,113 @@ private[render] object BvhBuilder:
 
   /** SAH bins per split. */
   val Bins = 16
+
+  /** The deepest a leaf may lie below the root; a node there is a leaf, however many it holds. */
+  val MaxDepth = 128
+
+/** A [[Tree]] collapsed into a 4-wide tree (Wald et al. 2008, "Getting rid of packets"): each
+  * node holds up to four children, each either a node or a leaf's range of primitives, with the
+  * four child boxes in single precision, rounded outwards so that every ray that meets a double
+  * box meets its float one, in structure-of-arrays order: node n's floats at 24n, the low x of
+  * its four children first, then low y, low z, high x, high y, high z. `child(4n + c)` is the
+  * node or first primitive of child c and `count(4n + c)` its number of primitives (0 for a
+  * node, −1 for an empty slot). Node 0 is the root.
+  */
+private[render] final class WideTree(
+    val size: Int,
+    val boxes: Array[Float],
+    val child: Array[Int],
+    val count: Array[Int]
+)
+
+/** Collapsing a binary [[Tree]] into a [[WideTree]]. */
+private[render] object WideTree:
+  /** Children per node. */
+  val Width = 4
+
+  /** The wide tree of `tree`: each node takes its binary node's two children and opens the child
+    * of largest surface area that is not a leaf, until it has four or only leaves.
+    */
+  def collapse(tree: Tree): WideTree =
+    // Perf: arrays sized for the worst case (as many wide nodes as binary ones), filled once.
+    val n     = Math.max(1, tree.size)
+    val boxes = new Array[Float](24 * n)
+    val child = new Array[Int](Width * n)
+    val count = new Array[Int](Width * n)
+    val kids  = new Array[Int](Width)
+    // Why: the number of wide nodes made so far.
+    var size           = 0
+    def isLeaf(b: Int) = tree.links(2 * b + 1) > 0
+    def area(b: Int)   =
+      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
+      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
+      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
+      x * y + y * z + z * x
+    def make(binary: Int): Int =
+      val w = size
+      size += 1
+      // Why: the children gathered by opening the largest inner child, a loop on local arrays.
+      var m = 0
+      if isLeaf(binary) then
+        kids(0) = binary; m = 1
+      else
+        kids(0) = tree.links(2 * binary); kids(1) = kids(0) + 1; m = 2
+      var open = true
+      while m < Width && open do
+        var best = -1
+        var k    = 0
+        while k < m do
+          if !isLeaf(kids(k)) && (best < 0 || area(kids(k)) > area(kids(best))) then best = k
+          k += 1
+        if best < 0 then open = false
+        else
+          val left = tree.links(2 * kids(best))
+          kids(best) = left
+          kids(m) = left + 1
+          m += 1
+      // Why: loops over the slots: boxes rounded outwards, then each inner child made (which
+      // reuses `kids`, so they are copied first).
+      val mine = java.util.Arrays.copyOf(kids, m)
+      var c    = 0
+      while c < Width do
+        val at = 24 * w + c
+        if c < m then
+          val b = mine(c)
+          var a = 0
+          while a < 3 do
+            boxes(at + 4 * a) = down(tree.boxes(6 * b + a))
+            boxes(at + 12 + 4 * a) = up(tree.boxes(6 * b + 3 + a))
+            a += 1
+        else
+          var a = 0
+          while a < 3 do
+            boxes(at + 4 * a) = Float.PositiveInfinity
+            boxes(at + 12 + 4 * a) = Float.NegativeInfinity
+            a += 1
+          count(Width * w + c) = -1
+        c += 1
+      c = 0
+      while c < m do
+        val b = mine(c)
+        if isLeaf(b) then
+          child(Width * w + c) = tree.links(2 * b)
+          count(Width * w + c) = tree.links(2 * b + 1)
+        else
+          child(Width * w + c) = make(b)
+          count(Width * w + c) = 0
+        c += 1
+      w
+    if tree.size == 0 then WideTree(0, boxes, child, count)
+    else
+      val _ = make(0)
+      WideTree(size, boxes, child, count)
+
+  /** The largest float at or below `x`. */
+  private def down(x: Double): Float =
+    val f = x.toFloat
+    if f.toDouble > x then Math.nextDown(f) else f
+
+  /** The smallest float at or above `x`. */
+  private def up(x: Double): Float =
+    val f = x.toFloat
+    if f.toDouble < x then Math.nextUp(f) else f

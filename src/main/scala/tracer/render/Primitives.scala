@@ -1,7 +1,18 @@
 package tracer.render
 
-import tracer.geometry.{Box, Cone, Csg, Placed, Plane, Ray, Shape, Sphere, Torus, Triangle}
-import tracer.math.Vec3
+import tracer.geometry.{
+  Box,
+  Cone,
+  CrossingBuffer,
+  Csg,
+  Kernel,
+  Placed,
+  Plane,
+  Shape,
+  Sphere,
+  Torus,
+  Triangle
+}
 
 /** Which way a shape is traced: the ray kernel's fast paths or the general one. */
 enum Route:
@@ -92,7 +103,7 @@ object Primitives:
   /** The distance along the ray (origin o, unit direction d) to primitive `k`, or +∞ on a miss:
     * bit for bit what [[tracer.geometry.Shape.distance]] gives for its shape, the same operations
     * in the same order on the same values. A triangle farther than `cutoff` may be reported as a
-    * miss without finishing its test. Only the general route makes a [[Ray]].
+    * miss without finishing its test. The general route takes its scratch from `buffer`.
     */
   inline def distance(
       p: Primitives,
@@ -103,15 +114,18 @@ object Primitives:
       oz: Double,
       dx: Double,
       dy: Double,
-      dz: Double
+      dz: Double,
+      buffer: CrossingBuffer
   ): Double =
     val kd = p.kind(k)
     if kd == TriangleKind then triangle(p.data, Stride * k, cutoff, ox, oy, oz, dx, dy, dz)
     else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
     else if kd == PlaneKind then plane(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
-    else general(p.all(p.index(k)), ox, oy, oz, dx, dy, dz)
+    else general(p.all(p.index(k)), ox, oy, oz, dx, dy, dz, buffer)
 
-  /** The general route: [[tracer.geometry.Shape.distance]] on a ray made for it. */
+  /** The general route: [[tracer.geometry.Shape.distance]], bit for bit, from the solids' kernel
+    * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test.
+    */
   private def general(
       shape: Shape,
       ox: Double,
@@ -119,8 +133,9 @@ object Primitives:
       oz: Double,
       dx: Double,
       dy: Double,
-      dz: Double
-  ): Double = Shape.distance(shape, Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)))
+      dz: Double,
+      buffer: CrossingBuffer
+  ): Double = Kernel.distance(shape, ox, oy, oz, dx, dy, dz, buffer)
 
   /** Shape.planeDistance on flat data: equations 24–27. */
   private inline def plane(

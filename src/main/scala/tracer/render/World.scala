@@ -75,7 +75,7 @@ final class World(scene: Scene):
     var bestT = limit
     var k     = 0
     while k < unbounded.size do
-      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz)
+      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
       if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
         bestT = t
         best = unbounded.index(k)
@@ -115,7 +115,8 @@ final class World(scene: Scene):
         oz,
         dx,
         dy,
-        dz
+        dz,
+        query.crossings
       ) < limit)
     do k += 1
     k < unbounded.size || bvh.occluded(ox, oy, oz, dx, dy, dz, limit, query)

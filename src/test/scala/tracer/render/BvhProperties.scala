@@ -3,8 +3,21 @@ package tracer.render
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Plane, Ray, Shape, Sphere, Triangle}
-import tracer.math.Vec3
+import tracer.geometry.{
+  Box,
+  Cone,
+  Csg,
+  CsgOperation,
+  Cylinder,
+  Placed,
+  Plane,
+  Ray,
+  Shape,
+  Sphere,
+  Torus,
+  Triangle
+}
+import tracer.math.{Placement, Vec3}
 import tracer.scene.{Camera, Scene, SceneObject}
 import tracer.testkit.Generators.*
 
@@ -28,10 +41,67 @@ class BvhProperties extends ScalaCheckSuite:
     yield Plane.at(n, d))
   )
 
-  private val world: Gen[World] =
-    Gen.choose(0, 300).flatMap(n => Gen.listOfN(n, shape)).map { shapes =>
-      World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = shapes.map(SceneObject(_))))
-    }
+  // The general route: version 3's solids, placed shapes and combinations, which the tree holds
+  // by their bounds and tests through Shape.distance (or a kernel that must agree with it).
+  private val size            = Gen.choose(0.2, 3.0)
+  private val box: Gen[Shape] = Gen.oneOf(
+    for c <- point; dx <- size; dy <- size; dz <- size yield Box(c, c + Vec3(dx, dy, dz)),
+    // On the grid: faces shared with triangles and planes, so fast and general routes tie.
+    for c <- gridPoint; d <- Gen.choose(1, 3) yield Box(c, c + Vec3(d, d, d))
+  )
+  private val cone: Gen[Shape] =
+    for
+      b     <- point
+      axis  <- Gen.oneOf(unitVec, Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3.UnitZ))
+      h     <- size
+      r0    <- Gen.oneOf(Gen.const(0.0), size)
+      r1    <- size
+      open  <- Gen.oneOf(true, false)
+      equal <- Gen.oneOf(true, false)
+    yield if equal then Cylinder(b, b + axis * h, r1, open) else Cone(b, r0, b + axis * h, r1, open)
+  private val placement: Gen[Placement] =
+    for s <- Gen.choose(0.3, 3.0); r <- point; t <- point yield Placement(s, r * 18, t)
+  // A torus sits at the origin: it reaches the rest of the scene placed.
+  private val torus: Gen[Shape] =
+    for r <- size; f <- Gen.choose(0.1, 0.8); p <- placement yield Placed(Torus(r, r * f), p)
+  private val solid: Gen[Shape] =
+    Gen.oneOf(box, cone, torus, for c <- point; r <- size yield Sphere(c, r))
+  private val placed: Gen[Shape] =
+    for s <- Gen.oneOf(box, cone, torus); p <- placement yield Placed(s, p)
+  private val csg: Gen[Shape] =
+    for
+      op       <- Gen.oneOf(CsgOperation.values.toIndexedSeq)
+      n        <- Gen.choose(1, 3)
+      children <- Gen.listOfN(n, solid)
+      nested   <- Gen.oneOf(true, false)
+      inner    <- Gen.oneOf(CsgOperation.values.toIndexedSeq)
+      moved    <- Gen.option(placement)
+    yield
+      val kids = children.toVector
+      val tree =
+        if nested && kids.size >= 2 then Csg(op, Csg(inner, kids.take(2)) +: kids.drop(2))
+        else Csg(op, kids)
+      moved.fold(tree: Shape)(Placed(tree, _))
+  // A union holding triangles (a mesh in a combination), which only a union may.
+  private val meshUnion: Gen[Shape] =
+    Gen
+      .listOfN(6, Gen.zip(gridPoint, gridPoint, gridPoint).retryUntil(Triangle.isProper.tupled))
+      .map(ts => Csg(CsgOperation.Union, ts.map(Triangle(_, _, _)).toVector))
+  private val general: Gen[Shape] =
+    Gen.frequency(3 -> box, 3 -> cone, 2 -> torus, 2 -> placed, 3 -> csg, 1 -> meshUnion)
+
+  private def worldOf(shapes: Seq[Shape]): World =
+    World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = shapes.map(SceneObject(_))))
+
+  private val world: Gen[World] = Gen.frequency(
+    2 -> Gen.choose(0, 300).flatMap(n => Gen.listOfN(n, shape)).map(worldOf),
+    // Fast and general shapes mixed in one tree, and a general-only tree.
+    2 -> Gen
+      .choose(0, 120)
+      .flatMap(n => Gen.listOfN(n, Gen.frequency(1 -> shape, 1 -> general)))
+      .map(worldOf),
+    1 -> Gen.choose(0, 60).flatMap(n => Gen.listOfN(n, general)).map(worldOf)
+  )
 
   /** Rays from anywhere, and axis-aligned rays from grid points (zero direction components). */
   private val ray: Gen[Ray] = Gen.oneOf(
@@ -111,9 +181,49 @@ class BvhProperties extends ScalaCheckSuite:
       val w = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = order.map(SceneObject(_))))
       assertEquals(w.nearest(down, w.newQuery()), 0)
 
+  test("a fast and a general shape at the same distance: the lowest index wins either way"):
+    // A sphere and a union of just that sphere give the same t bit for bit (a union's distance is
+    // its nearest child's); a box and a triangle lying on its top face meet a ray down at y = 1.
+    val ball  = Sphere(Vec3(0, 0, 0), 1)
+    val alone = Csg(CsgOperation.Union, Vector(ball))
+    val cube  = Box(Vec3(-1, -1, -1), Vec3(1, 1, 1))
+    val top   = Triangle(Vec3(-1, 1, -1), Vec3(1, 1, -1), Vec3(-1, 1, 1))
+    val down  = Ray(Vec3(0, 3, 0), -Vec3.UnitY)
+    for
+      pair  <- List(List(ball, alone), List(cube, top))
+      order <- List(pair, pair.reverse)
+      many  <- List(1, 20) // alone, and spread over the leaves of a tree
+    do
+      val w = worldOf((0 until many).flatMap(_ => order))
+      val q = w.newQuery()
+      assertEquals(w.nearest(down, q), w.nearestByBruteForce(down), order.toString)
+      assertEquals(w.nearest(down, q), 0, order.toString)
+      assertEquals(q.distance, 2.0)
+
+  test(
+    "a degenerate input the builder cannot split evenly stops at its depth cap and still agrees"
+  ):
+    // Sizes and places growing geometrically: every binned split peels off the largest few, so
+    // without the cap the tree would be as deep as the list is long.
+    val chain = (0 until 480).map(i => Sphere(Vec3(Math.pow(2, i), 0, 0), Math.pow(2, i) / 20))
+    val bvh   = Bvh(chain)
+    assert(bvh.depth <= BvhBuilder.MaxDepth + 1, bvh.depth.toString) // the root and 128 levels
+    assert(bvh.depth >= BvhBuilder.MaxDepth / 2, s"not degenerate: depth ${bvh.depth}")
+    val w     = worldOf(chain)
+    val q     = w.newQuery()
+    val along =
+      (0 until 480 by 7).map(i => Ray(Vec3(Math.pow(2, i), 5 * Math.pow(2, i), 0), -Vec3.UnitY))
+    val back = Ray(Vec3(Math.pow(2, 481), 0, 0), -Vec3.UnitX)
+    for r <- back +: along do assertEquals(w.nearest(r, q), w.nearestByBruteForce(r), r.toString)
+    // And shapes that all sit at one point: one leaf, the lowest index on every tie.
+    val same = worldOf((0 until 300).map(_ => Sphere(Vec3(1, 2, 3), 1)))
+    assertEquals(same.nearest(Ray(Vec3(1, 2, -5), Vec3.UnitZ), same.newQuery()), 0)
+
   test("a large grid of spheres builds a tree, not a single leaf"):
     val spheres = for x <- 0 until 20; z <- 0 until 20 yield SceneObject(Sphere(Vec3(x, 0, z), 0.4))
     val w       = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = spheres))
     val bvh     = Bvh(spheres.map(_.shape))
     assert(bvh.nodeCount > 100, bvh.nodeCount.toString)
+    // Collapsed four-wide: at most about a third as many nodes as the binary tree.
+    assert(bvh.wideNodeCount <= bvh.nodeCount / 2, s"${bvh.wideNodeCount} of ${bvh.nodeCount}")
     assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newQuery()), 105)

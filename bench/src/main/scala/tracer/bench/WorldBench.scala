@@ -5,7 +5,7 @@ import org.openjdk.jmh.annotations.*
 import tracer.demo.BenchScenes
 import tracer.geometry.Ray
 import tracer.math.Vec3
-import tracer.render.{CameraConfig, Projection, Query, World}
+import tracer.render.{Bvh, CameraConfig, Projection, Query, World}
 import tracer.scene.Scene
 
 /** Nearest-hit and shadow queries against the benchmark scenes, with and without the hierarchy.
@@ -25,12 +25,14 @@ class WorldBench:
   var world: World     = null // nosemgrep: no-null — set by setup() before any benchmark
   var query: Query     = null // nosemgrep: no-null — set by setup() before any benchmark
   var rays: Array[Ray] = null // nosemgrep: no-null — set by setup() before any benchmark
+  var bvh: Bvh         = null // nosemgrep: no-null — set by setup() before any benchmark
   var index            = 0
 
   @Setup def setup(): Unit =
     val scene: Scene = BenchScenes.scene(sceneName)
     world = World(scene)
     query = world.newQuery()
+    bvh = Bvh(scene.objects.map(_.shape).toIndexedSeq)
     // 1024 primary rays spread over the picture.
     val projection = Projection(scene.camera, CameraConfig.forCamera(scene.camera, 32))
     rays = Array.tabulate(1024)(i => projection.ray(i % 32 + 0.5, (i / 32) % 18 + 0.5))
@@ -41,6 +43,30 @@ class WorldBench:
 
   /** The nearest hit through the hierarchy. */
   @Benchmark def nearest: Int = world.nearest(next(), query)
+
+  /** The hierarchy alone, its 4-wide tree (what `nearest` walks). */
+  @Benchmark def bvhWide: Int =
+    val r = next()
+    val o = r.origin
+    val d = r.direction
+    bvh.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, Int.MaxValue, query)
+
+  /** The hierarchy alone, the binary tree it was collapsed from: what the wide tree gains. */
+  @Benchmark def bvhBinary: Int =
+    val r = next()
+    val o = r.origin
+    val d = r.direction
+    bvh.nearestBinary(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, Int.MaxValue, query)
+
+  /** A shadow ray through the 4-wide tree alone. */
+  @Benchmark def occludedWide: Boolean =
+    val r = next()
+    bvh.occluded(0, 0.05, 2, -0.4 + r.direction.x, 0.6, -0.6, 12.0, query)
+
+  /** The same shadow ray through the binary tree. */
+  @Benchmark def occludedBinary: Boolean =
+    val r = next()
+    bvh.occludedBinary(0, 0.05, 2, -0.4 + r.direction.x, 0.6, -0.6, 12.0, query)
 
   /** The nearest hit by testing every shape: what the hierarchy saves. */
   @Benchmark def nearestBruteForce: Int = world.nearestByBruteForce(next())

@@ -1,0 +1,157 @@
+package tracer.geometry
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.math.{Placement, Vec3}
+import tracer.testkit.Generators.unitVec
+
+/** The solids' kernel on plain doubles gives what the reference functions of [[Shape]] give, bit
+  * for bit: distances, every crossing with its normal and leaf, inside tests, the quartic's roots.
+  */
+class KernelProperties extends ScalaCheckSuite:
+
+  private val coordinate = Gen.choose(-3.0, 3.0)
+  private val point      = for x <- coordinate; y <- coordinate; z <- coordinate yield Vec3(x, y, z)
+  // Coordinates on a grid: rays along faces and edges, through corners, parallel to slabs.
+  private val gridPoint =
+    for x <- Gen.choose(-2, 2); y <- Gen.choose(-2, 2); z <- Gen.choose(-2, 2)
+    yield Vec3(x, y, z)
+  private val size = Gen.choose(0.2, 2.5)
+
+  private val sphere = for c <- point; r <- size yield Sphere(c, r)
+  private val box    = Gen.oneOf(
+    for c <- point; dx <- size; dy <- size; dz <- size yield Box(c, c + Vec3(dx, dy, dz)),
+    for c <- gridPoint; d <- Gen.choose(1, 2) yield Box(c, c + Vec3(d, d, d))
+  )
+  private val cone =
+    for
+      b     <- Gen.oneOf(point, gridPoint)
+      axis  <- Gen.oneOf(unitVec, Gen.oneOf(Vec3.UnitX, Vec3.UnitY, -Vec3.UnitZ))
+      h     <- size
+      r0    <- Gen.oneOf(Gen.const(0.0), size)
+      r1    <- size
+      open  <- Gen.oneOf(true, false)
+      equal <- Gen.oneOf(true, false)
+    yield if equal then Cylinder(b, b + axis * h, r1, open) else Cone(b, r0, b + axis * h, r1, open)
+  private val torus    = for r <- size; f <- Gen.choose(0.1, 0.9) yield Torus(r, r * f)
+  private val triangle =
+    Gen.zip(point, point, point).retryUntil(Triangle.isProper.tupled).map(Triangle(_, _, _))
+  private val plane     = for n <- unitVec; d <- coordinate yield Plane.at(n, d)
+  private val placement =
+    for s <- Gen.choose(0.3, 3.0); r <- point; t <- point yield Placement(s, r * 60, t)
+  private val primitive: Gen[Shape] = Gen.oneOf(sphere, box, cone, torus)
+  private val placed: Gen[Shape]    = for s <- primitive; p <- placement yield Placed(s, p)
+  private val operation             = Gen.oneOf(CsgOperation.values.toIndexedSeq)
+  private val csg: Gen[Shape]       =
+    for
+      op       <- operation
+      n        <- Gen.choose(1, 3)
+      children <- Gen.listOfN(n, Gen.oneOf(primitive, placed))
+      nested   <- Gen.oneOf(true, false)
+      inner    <- operation
+      moved    <- Gen.option(placement)
+    yield
+      val kids = children.toVector
+      val tree =
+        if nested && kids.size >= 2 then Csg(op, Csg(inner, kids.take(2)) +: kids.drop(2))
+        else Csg(op, kids)
+      moved.fold(tree: Shape)(Placed(tree, _))
+  private val meshUnion: Gen[Shape] =
+    Gen.listOfN(4, Gen.oneOf(triangle, sphere)).map(ts => Csg(CsgOperation.Union, ts.toVector))
+  private val shape: Gen[Shape] =
+    Gen.frequency(
+      2 -> primitive,
+      2 -> placed,
+      4 -> csg,
+      1 -> meshUnion,
+      1 -> triangle,
+      1 -> plane
+    )
+
+  private val ray: Gen[Ray] = Gen.oneOf(
+    for o <- point.map(_ * 2); target <- point
+    yield Ray(o, (target - o).normalisedOr(Vec3.UnitX)),
+    for o <- gridPoint.map(_ * 2); d <- Gen.oneOf(Vec3.UnitX, -Vec3.UnitY, Vec3.UnitZ)
+    yield Ray(o, d)
+  )
+
+  private def bits(x: Double) = java.lang.Double.doubleToRawLongBits(x)
+
+  private def collected(s: Shape, r: Ray): List[(Long, Long, Long, Long, Int)] =
+    val b = CrossingBuffer()
+    val o = r.origin
+    val d = r.direction
+    // Start past 0, as a nested call does.
+    val end = Kernel.collect(s, o.x, o.y, o.z, d.x, d.y, d.z, b, 3)
+    (3 until end).toList.map(k =>
+      (bits(b.t(k)), bits(b.nx(k)), bits(b.ny(k)), bits(b.nz(k)), b.leaf(k))
+    )
+
+  private def reference(s: Shape, r: Ray): List[(Long, Long, Long, Long, Int)] =
+    Shape
+      .crossings(s, r)
+      .map(c => (bits(c.t), bits(c.normal.x), bits(c.normal.y), bits(c.normal.z), c.leaf))
+
+  property("collect gives Shape.crossings: every t, normal and leaf, bit for bit, in order"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      rays.foreach(r => assertEquals(collected(s, r), reference(s, r), s"$s $r"))
+    }
+
+  property("collect without normals gives the same ts and leaves"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      rays.foreach { r =>
+        val b   = CrossingBuffer()
+        val o   = r.origin
+        val d   = r.direction
+        val end = Kernel.collect(s, o.x, o.y, o.z, d.x, d.y, d.z, b, 0, normals = false)
+        val got = (0 until end).toList.map(k => (bits(b.t(k)), b.leaf(k)))
+        assertEquals(got, reference(s, r).map(c => (c._1, c._5)), s"$s $r")
+      }
+    }
+
+  property("distance is Shape.distance, bit for bit"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      val b = CrossingBuffer()
+      rays.foreach { r =>
+        val o = r.origin
+        val d = r.direction
+        assertEquals(
+          bits(Kernel.distance(s, o.x, o.y, o.z, d.x, d.y, d.z, b)),
+          bits(Shape.distance(s, r)),
+          s"$s $r"
+        )
+      }
+    }
+
+  property("inside is Shape.inside"):
+    forAll(shape, Gen.listOfN(20, Gen.oneOf(point, gridPoint))) { (s, ps) =>
+      ps.foreach(p => assertEquals(Kernel.inside(s, p.x, p.y, p.z), Shape.inside(s, p), s"$s $p"))
+    }
+
+  property("hitAt is the first crossing: its t, point, normal facing the ray, leaf and side"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      rays.foreach { r =>
+        val t       = Shape.distance(s, r)
+        val general = s match
+          case _: (Sphere | Plane | Triangle)         => false
+          case _: (Box | Cone | Torus | Placed | Csg) => true
+        Shape.crossings(s, r).headOption.filter(_ => general && t < Double.PositiveInfinity) match
+          case Some(c) =>
+            val front = c.normal.dot(r.direction) < 0
+            val n     = if front then c.normal else -c.normal
+            assertEquals(Shape.hitAt(s, r, t), Hit(c.t, r.at(c.t), n, c.leaf, front), s"$s $r")
+          case None => ()
+      }
+    }
+
+  property("rootsInto finds Polynomial.roots' roots, bit for bit"):
+    val coefficient = Gen.frequency(4 -> Gen.choose(-10.0, 10.0), 1 -> Gen.const(0.0))
+    forAll(Gen.listOfN(5, coefficient), Gen.choose(-5.0, 0.0), Gen.choose(0.0, 5.0)) {
+      (c, lo, hi) =>
+        val s = new Array[Double](Polynomial.ScratchSize)
+        c.zipWithIndex.foreach((x, k) => s(k) = x)
+        val n     = Polynomial.rootsInto(s, 0, 5, lo, hi, Polynomial.ScratchLevel)
+        val found = (0 until n).map(k => bits(s(Polynomial.ScratchLevel + Polynomial.RootsAt + k)))
+        assertEquals(found.toList, Polynomial.roots(IArray.from(c), lo, hi).map(bits))
+    }
