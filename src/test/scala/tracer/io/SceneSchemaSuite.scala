@@ -356,8 +356,8 @@ class SceneSchemaSuite extends munit.FunSuite with SceneDocuments:
       assertValid(xml, what)
       assert(parse(xml).isLeft, s"the reader accepts $what")
 
-  /** Version 4's additions (`<emission>`, a light's fade, a background above 1): the schema's side.
-    * The reader learns them in the version 4 reader's suites.
+  /** Version 4's additions (`<emission>`, a light's fade, a background above 1): the schema's side
+    * (the reader's is in SceneXmlVersion4Suite).
     */
   private val version4 = List(
     """<background r="4" g="2.5" b="1"/>""",
@@ -380,8 +380,8 @@ class SceneSchemaSuite extends munit.FunSuite with SceneDocuments:
       """<light fade-distance="INF" fade-power="1"><location x="0" y="0" z="0"/></light>"""
     ).foreach(body => assertInvalid(withCamera(body), body))
 
-  // Before version 4's reader, the reader refuses fade-distance as an unknown attribute; with it,
-  // because fade-power is missing: refused either way, and a reader that took it would fail here.
+  // The reader refuses fade-distance because fade-power is missing; a reader that took it would
+  // fail here.
   test(
     "a light's fade-distance without fade-power: only the reader can refuse it (both or neither)"
   ):
@@ -440,14 +440,8 @@ class SceneSchemaSuite extends munit.FunSuite with SceneDocuments:
     val readerAttributes = v.CameraAttributes ++ v.AreaAttributes ++ v.MeshAttributes ++
       v.SphereAttributes ++ v.PlaneAttributes ++ v.CylinderAttributes ++ v.ConeAttributes ++
       v.TorusAttributes ++ v.SurfaceAttributes ++ v.CheckerAttributes ++ v.TextureAttributes ++
-      v.VectorAttributes ++ v.ColourAttributes + "scale"
-    // Version 4's names, which the reader learns on the version 4 branch; once both are merged
-    // this set is empty, and the two lists are the same.
-    val version4 = Set("emission", "fade-distance", "fade-power")
+      v.VectorAttributes ++ v.ColourAttributes ++ v.LightAttributes + "scale"
     assertEquals(readerElements -- schemaElements, Set.empty[String])
     assertEquals(readerAttributes -- schemaAttributes, Set.empty[String])
-    assert((schemaElements -- readerElements).subsetOf(version4), schemaElements -- readerElements)
-    assert(
-      (schemaAttributes -- readerAttributes).subsetOf(version4),
-      schemaAttributes -- readerAttributes
-    )
+    assertEquals(schemaElements -- readerElements, Set.empty[String])
+    assertEquals(schemaAttributes -- readerAttributes, Set.empty[String])
