@@ -18,13 +18,16 @@ import tracer.scene.{Pigment, Scene}
   * @param projection the camera's rays
   * @param settings   N, the seed and the sampler
   * @param depth      d: at most d bounces after the camera ray (a clear pass is not one)
+  * @param strategy   how lights found both ways are counted: the power heuristic (always, but
+  *   for tests), or by one of the two ways alone
   */
 final class PathTracer(
     scene: Scene,
     private[path] val world: World,
     private[path] val projection: Projection,
     settings: Integrator.Path,
-    private[path] val depth: Int
+    private[path] val depth: Int,
+    strategy: PathTracer.Strategy = PathTracer.Strategy.Both
 ):
   private[path] val emitters = Emitters(scene)
   private[path] val sampler  = Sampler(settings.sampler, settings.seed, settings.samples)
@@ -35,6 +38,22 @@ final class PathTracer(
 
   /** The sampled emitters (for tests). */
   def lights: Emitters = emitters
+
+  /** The weight of light found by a path after a smooth bounce of density `path`, where
+    * next-event estimation would draw it with density `light` (> 0).
+    */
+  private[path] def pathWeight(path: Double, light: Double): Double = strategy match
+    case PathTracer.Strategy.Both       => PathTracer.powerHeuristic(path, light)
+    case PathTracer.Strategy.LightsOnly => 0.0
+    case PathTracer.Strategy.PathsOnly  => 1.0
+
+  /** The weight of light found by next-event estimation with density `light` (> 0), where a
+    * bounce would draw it with density `path`.
+    */
+  private[path] def lightWeight(light: Double, path: Double): Double = strategy match
+    case PathTracer.Strategy.Both       => PathTracer.powerHeuristic(light, path)
+    case PathTracer.Strategy.LightsOnly => 1.0
+    case PathTracer.Strategy.PathsOnly  => 0.0
 
   /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
   private def pixel(task: PathTracer.Task, x: Int, y: Int): Colour =
@@ -66,6 +85,19 @@ object PathTracer:
 
   /** The most a path survives Russian roulette with: 0.95, as Mitsuba. */
   val MostSurvival: Double = 0.95
+
+  /** How light that both next-event estimation and the paths can find is counted. */
+  enum Strategy:
+    /** Both ways, weighted by the power heuristic: the renderer's way. */
+    case Both
+
+    /** Next-event estimation alone (the paths find only what it cannot: point lights aside,
+      * light after a mirror or glass, glowing planes, solids and combinations).
+      */
+    case LightsOnly
+
+    /** The paths alone (next-event estimation only for point lights, which no path can find). */
+    case PathsOnly
 
   /** The power heuristic's weight for an estimate of density `a` beside one of density `b`. */
   inline def powerHeuristic(a: Double, b: Double): Double =
@@ -114,7 +146,7 @@ object PathTracer:
           val sky = world.background
           val w   =
             if lastDensity > 0 && emitters.skyDensity > 0 then
-              powerHeuristic(lastDensity, emitters.skyDensity)
+              tracer.pathWeight(lastDensity, emitters.skyDensity)
             else 1.0
           r += tr * sky.r * w
           g += tg * sky.g * w
@@ -125,11 +157,9 @@ object PathTracer:
           val hit     = Shape.hitAt(shape, ray, query.distance)
           val surface = world.surface(i, hit.leaf)
           if hit.front && surface.emits then
-            val e = surface.emission
-            val w =
-              if lastDensity > 0 && emitters.samples(i) then
-                powerHeuristic(lastDensity, emitters.density(i, lastPoint, hit.point))
-              else 1.0
+            val e     = surface.emission
+            val light = if lastDensity > 0 then emitters.density(i, lastPoint, hit.point) else 0.0
+            val w     = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
             r += tr * e.r * w
             g += tg * e.g * w
             b += tb * e.b * w
@@ -173,7 +203,7 @@ object PathTracer:
                 bounces += 1
                 eta *= s.eta
                 lastDensity = s.density
-                lastPoint = hit.point
+                lastPoint = ray.origin
                 val most = Math.max(tr, Math.max(tg, tb))
                 if most <= 0 then going = false
                 else if bounces >= RouletteDepth then
@@ -203,15 +233,15 @@ object PathTracer:
     ): Unit =
       val choice = sampler.uniform(x, y, j, base)
       val at     = sampler.pair(x, y, j, base + 1)
-      val light  = emitters.sample(hit.point, choice, Sampler.first(at), Sampler.second(at))
+      // The smooth lobes reflect on the path's side only: the light is sought from S0, just off
+      // the face's own plane on that side (as Whitted's shadow rays, so that a point light gives
+      // exactly Whitted's direct light), and the shadow ray stops short of a glowing shape's
+      // point so as not to meet that shape itself.
+      val from  = hit.point + hit.normal * Shading.Epsilon
+      val light = emitters.sample(from, choice, Sampler.first(at), Sampler.second(at))
       if !light.dark then
         val f = bsdf.evaluate(normal, wi, light.direction)
         if f.max > 0 then
-          // The shadow ray starts off the face's own plane, on the side it leaves by; it stops
-          // short of a glowing shape's point so as not to meet that shape itself.
-          val side =
-            if light.direction.dot(hit.normal) >= 0 then Shading.Epsilon else -Shading.Epsilon
-          val from  = hit.point + hit.normal * side
           val reach =
             if light.density == 0 || light.distance.isInfinite then light.distance
             else light.distance - 2 * Shading.Epsilon
@@ -219,7 +249,8 @@ object PathTracer:
           if share > 0 then
             val w =
               if light.density == 0 then share
-              else share * powerHeuristic(light.density, bsdf.density(normal, wi, light.direction))
+              else
+                share * tracer.lightWeight(light.density, bsdf.density(normal, wi, light.direction))
             r += tr * f.r * light.value.r * w
             g += tg * f.g * light.value.g * w
             b += tb * f.b * light.value.b * w
