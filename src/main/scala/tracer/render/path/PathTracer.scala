@@ -33,6 +33,17 @@ final class PathTracer(
   private[path] val sampler  = Sampler(settings.sampler, settings.seed, settings.samples)
   private val samples        = settings.samples
 
+  // True when shadow rays must walk through clear surfaces.
+  private[path] val clear = Visibility.anyClear(scene)
+
+  // The scattering function of every shape whose surface is the same at every point (one plain
+  // colour, no surfaces per leaf), made once.
+  private[path] val bsdfs: IArray[Option[Bsdf]] = IArray.from(scene.objects.map { o =>
+    o.surface.pigment match
+      case Pigment.Solid(c) if o.leafSurfaces.isEmpty => Some(Bsdf.of(o.surface, c, o.surface.ior))
+      case _                                          => None
+  })
+
   /** A tracer for one row task: it keeps scratch space, so no two threads share one. */
   def task(): PathTracer.Task = PathTracer.Task(this)
 
@@ -58,12 +69,13 @@ final class PathTracer(
   /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
   private def pixel(task: PathTracer.Task, x: Int, y: Int): Colour =
     // Perf: the sum in three locals, no Colour per sample kept.
-    var r = 0.0
-    var g = 0.0
-    var b = 0.0
-    var j = 0
+    var r  = 0.0
+    var g  = 0.0
+    var b  = 0.0
+    val at = sampler.pixel(x, y)
+    var j  = 0
     while j < samples do
-      task.trace(x, y, j)
+      task.trace(x, y, at, j)
       r += task.r
       g += task.g
       b += task.b
@@ -114,7 +126,7 @@ object PathTracer:
     private val emitters   = tracer.emitters
     private val sampler    = tracer.sampler
     private val query      = world.newQuery()
-    private val visibility = Visibility(world, query)
+    private val visibility = Visibility(world, query, tracer.clear)
     // Why: the last path's radiance, read by the pixel loop (see the class's Perf note).
     private[PathTracer] var r = 0.0
     private[PathTracer] var g = 0.0
@@ -123,9 +135,11 @@ object PathTracer:
     /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
     def pixel(x: Int, y: Int): Colour = tracer.pixel(this, x, y)
 
-    /** Sample j of pixel (x, y): the radiance one path brings back, left in r, g, b. */
-    private[PathTracer] def trace(x: Int, y: Int, j: Int): Unit =
-      val offset = sampler.pair(x, y, j, 0)
+    /** Sample j of pixel (x, y), whose sampler hash is `at`: the radiance one path brings back,
+      * left in r, g, b.
+      */
+    private[PathTracer] def trace(x: Int, y: Int, at: Long, j: Int): Unit =
+      val offset = sampler.pairAt(at, j, 0)
       var ray    =
         tracer.projection.ray(x + Sampler.first(offset), y + Sampler.second(offset))
       // The throughput, what the path has gathered, and its state.
@@ -163,7 +177,9 @@ object PathTracer:
             r += tr * e.r * w
             g += tg * e.g * w
             b += tb * e.b * w
-          val bsdf = Bsdf.of(surface, tracer.pigment(i, hit))
+          val bsdf = tracer.bsdfs(i) match
+            case Some(fixed) => fixed
+            case None        => Bsdf.of(surface, tracer.pigment(i, hit), world.surface(i).ior)
           val base = 2 + Sampler.Dimensions * vertex
           vertex += 1
           if bounces >= tracer.depth then
@@ -178,10 +194,10 @@ object PathTracer:
             val normal = Shape.shadingNormal(shape, hit, ray)
             val wi     = -ray.direction
             if bsdf.smooth && !emitters.isEmpty then
-              nextEvent(x, y, j, base, hit, normal, wi, bsdf, tr, tg, tb)
-            val uv      = sampler.pair(x, y, j, base + 4)
-            val fresnel = if bsdf.glass then sampler.uniform(x, y, j, base + 7) else 0.0
-            val choice  = sampler.uniform(x, y, j, base + 3)
+              nextEvent(at, j, base, hit, normal, wi, bsdf, tr, tg, tb)
+            val uv      = sampler.pairAt(at, j, base + 4)
+            val fresnel = if bsdf.glass then sampler.uniformAt(at, j, base + 7) else 0.0
+            val choice  = sampler.uniformAt(at, j, base + 3)
             val s       =
               bsdf.sample(
                 normal,
@@ -208,7 +224,7 @@ object PathTracer:
                 if most <= 0 then going = false
                 else if bounces >= RouletteDepth then
                   val survive = Math.min(most * eta * eta, MostSurvival)
-                  if sampler.uniform(x, y, j, base + 6) >= survive then going = false
+                  if sampler.uniformAt(at, j, base + 6) >= survive then going = false
                   else
                     tr /= survive
                     tg /= survive
@@ -219,8 +235,7 @@ object PathTracer:
       * of it that the shadow ray lets through; added to r, g, b.
       */
     private def nextEvent(
-        x: Int,
-        y: Int,
+        at: Long,
         j: Int,
         base: Int,
         hit: Hit,
@@ -231,14 +246,14 @@ object PathTracer:
         tg: Double,
         tb: Double
     ): Unit =
-      val choice = sampler.uniform(x, y, j, base)
-      val at     = sampler.pair(x, y, j, base + 1)
+      val choice = sampler.uniformAt(at, j, base)
+      val point  = sampler.pairAt(at, j, base + 1)
       // The smooth lobes reflect on the path's side only: the light is sought from S0, just off
       // the face's own plane on that side (as Whitted's shadow rays, so that a point light gives
       // exactly Whitted's direct light), and the shadow ray stops short of a glowing shape's
       // point so as not to meet that shape itself.
       val from  = hit.point + hit.normal * Shading.Epsilon
-      val light = emitters.sample(from, choice, Sampler.first(at), Sampler.second(at))
+      val light = emitters.sample(from, choice, Sampler.first(point), Sampler.second(point))
       if !light.dark then
         val f = bsdf.evaluate(normal, wi, light.direction)
         if f.max > 0 then
