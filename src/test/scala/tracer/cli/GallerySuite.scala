@@ -44,6 +44,22 @@ class GallerySuite extends munit.FunSuite with Images:
         assertGolden(readImage(output), name.replace(".xml", ""))
       finally Files.delete(output)
 
+  test("scenes/cornell.xml path-traced renders as its reference picture (48 pixels, -s 16)"):
+    val output = Files.createTempFile("gallery", ".png")
+    try
+      val err    = ByteArrayOutputStream()
+      val scene  = ByteArrayInputStream(Files.readAllBytes(scenes.resolve("cornell.xml")))
+      val status = Main.run(
+        List("-m", "path", "-s", "16", "-r", "7", "-x", "48", "-g", "srgb", output.toString),
+        scene,
+        PrintStream(ByteArrayOutputStream()),
+        PrintStream(err),
+        scenes.toAbsolutePath
+      )
+      assertEquals(status, 0, err.toString)
+      assertGolden(readImage(output), "cornell-path")
+    finally Files.delete(output)
+
   test("together the gallery scenes use every element and attribute of docs/scene-format.md"):
     val used = gallery
       .flatMap(n => XML.loadFile(scenes.resolve(n).toFile).descendant_or_self)
