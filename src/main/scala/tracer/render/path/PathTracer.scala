@@ -128,9 +128,9 @@ object PathTracer:
     private val query      = world.newQuery()
     private val visibility = Visibility(world, query, tracer.clear)
     // Why: the last path's radiance, read by the pixel loop (see the class's Perf note).
-    private[PathTracer] var r = 0.0
-    private[PathTracer] var g = 0.0
-    private[PathTracer] var b = 0.0
+    private[path] var r = 0.0
+    private[path] var g = 0.0
+    private[path] var b = 0.0
 
     /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
     def pixel(x: Int, y: Int): Colour = tracer.pixel(this, x, y)
@@ -138,7 +138,7 @@ object PathTracer:
     /** Sample j of pixel (x, y), whose sampler hash is `at`: the radiance one path brings back,
       * left in r, g, b.
       */
-    private[PathTracer] def trace(x: Int, y: Int, at: Long, j: Int): Unit =
+    private[path] def trace(x: Int, y: Int, at: Long, j: Int): Unit =
       val offset = sampler.pairAt(at, j, 0)
       var ray    =
         tracer.projection.ray(x + Sampler.first(offset), y + Sampler.second(offset))
