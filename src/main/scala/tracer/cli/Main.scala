@@ -5,7 +5,7 @@ import java.nio.file.Path
 import scala.util.control.NonFatal
 import tracer.image.Bitmap
 import tracer.io.{Images, OutputFile}
-import tracer.render.{CameraConfig, Renderer, ShadingMode}
+import tracer.render.{CameraConfig, Film, Integrator, Renderer, SamplerKind, ShadingMode}
 import tracer.scene.Scene
 
 /** The `tracer` command: `tracer [options] OUTPUT < scene.xml` or `tracer -i scene.xml OUTPUT`
@@ -151,16 +151,23 @@ object Main:
       camera.width,
       camera.height
     )
+    val integrator =
+      if options.pathMode then
+        Integrator.Path(
+          options.pathSamples.getOrElse(Integrator.DefaultPathSamples),
+          options.seed.getOrElse(0),
+          options.sampler.getOrElse(SamplerKind.Default)
+        )
+      else
+        Integrator.Whitted(
+          if options.quick then ShadingMode.Quick else ShadingMode.Full,
+          options.samples
+        )
     CameraConfig(
-      zoom = options.zoom.getOrElse(camera.zoom),
-      width = size.width,
-      height = size.height,
-      columns = size.columns,
-      rows = size.rows,
-      depth = options.depth,
-      mode = if options.quick then ShadingMode.Quick else ShadingMode.Full,
-      samples = options.samples,
-      encoding = options.encoding
+      Film(options.zoom.getOrElse(camera.zoom), size.width, size.height, size.columns, size.rows),
+      integrator,
+      options.depth,
+      options.encoding
     )
 
   /** Refuses a picture whose pixels cannot fit in this JVM's memory, before any is rendered. */

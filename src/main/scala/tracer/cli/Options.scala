@@ -3,7 +3,7 @@ package tracer.cli
 import scopt.{OEffect, OParser}
 import tracer.BuildInfo
 import tracer.image.Encoding
-import tracer.render.CameraConfig
+import tracer.render.{CameraConfig, Integrator, SamplerKind}
 
 /** The command line as given: each optional value is `None` when its option was absent.
   *
@@ -26,6 +26,11 @@ import tracer.render.CameraConfig
   * @param stack   `--stack FILE`, repeated: write OUTPUT as these images one below the other
   *   instead of rendering (how `scripts/still.sh` joins its bands)
   * @param batch   `--batch LIST`: render every frame the list names, in this one process
+  * @param pathMode    `-m path`: path tracing instead of Whitted's tracer
+  * @param pathSamples `-s N`, path mode's samples a pixel
+  * @param seed        `--seed S`, path mode's noise pattern
+  * @param sampler     `--sampler KIND`, path mode's sampler
+  * @param antialiased true when `-a` was given (a usage error in path mode, even `-a 1`)
   */
 final case class Options(
     output: String = "",
@@ -45,7 +50,12 @@ final case class Options(
     version: Boolean = false,
     size: Boolean = false,
     stack: List[String] = Nil,
-    batch: Option[String] = None
+    batch: Option[String] = None,
+    pathMode: Boolean = false,
+    pathSamples: Option[Int] = None,
+    seed: Option[Int] = None,
+    sampler: Option[SamplerKind] = None,
+    antialiased: Boolean = false
 )
 
 /** What the command line asks for: a render, the usage text, or a usage error. */
@@ -82,6 +92,8 @@ object Options:
       Command.Help(usage)
     else
       (result, errors) match
+        case (Some(options), Nil) if pathConflict(options).isDefined =>
+          Command.UsageError(pathConflict(options).getOrElse(""))
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
         case (Some(options @ Options(batch = Some(list))), Nil) =>
@@ -100,6 +112,20 @@ object Options:
         case (Some(options), Nil) => Command.Render(options)
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
+
+  /** Why path mode's options and these options cannot go together, if they cannot: `-s`,
+    * `--seed` and `--sampler` need `-m path`, and `-a` and `-q` are Whitted's alone.
+    */
+  private def pathConflict(options: Options): Option[String] =
+    if options.pathMode then
+      if options.antialiased then
+        Some("-a is Whitted's antialiasing: with -m path give -s N samples instead")
+      else if options.quick then Some("-q is a Whitted preview and cannot go with -m path")
+      else None
+    else if options.pathSamples.isDefined then Some("-s needs -m path")
+    else if options.seed.isDefined then Some("--seed needs -m path")
+    else if options.sampler.isDefined then Some("--sampler needs -m path")
+    else None
 
   /** The Java this process runs on, as `--version`'s second line names it. */
   private[cli] def javaLine: String =
@@ -138,7 +164,44 @@ object Options:
         .valueName("d")
         .validate(atLeast("-r", 0))
         .action((v, o) => o.copy(depth = v))
-        .text("depth: the most reflections and refractions a ray can make (default 5)"),
+        .text(
+          "depth: the most reflections and refractions a ray can make; with -m path, the most bounces (default 5)"
+        ),
+      opt[String]('m', "mode")
+        .valueName("whitted|path")
+        .validate(v =>
+          if v == "whitted" || v == "path" then Right(())
+          else Left(s"-m must be whitted or path, got '$v'")
+        )
+        .action((v, o) => o.copy(pathMode = v == "path"))
+        .text("whitted (the default: versions 1-3 exactly) or path (Monte Carlo path tracing)"),
+      opt[Int]('s', "samples")
+        .valueName("N")
+        .validate(v =>
+          if v >= 1 && v <= Integrator.MaxPathSamples then Right(())
+          else Left(s"-s must be an integer from 1 to ${Integrator.MaxPathSamples}, got $v")
+        )
+        .action((v, o) => o.copy(pathSamples = Some(v)))
+        .text(s"path mode: N samples a pixel, 1 to ${Integrator.MaxPathSamples} (default 64)"),
+      opt[Int]("seed")
+        .valueName("S")
+        .validate(atLeast("--seed", 0))
+        .action((v, o) => o.copy(seed = Some(v)))
+        .text("path mode: which noise pattern, 0 <= S < 2^31 (default 0)"),
+      opt[String]("sampler")
+        .valueName(SamplerKind.values.map(_.name).mkString("|"))
+        .validate(v =>
+          SamplerKind
+            .named(v)
+            .map(_ => ())
+            .toRight(
+              s"--sampler must be ${SamplerKind.values.map(_.name).mkString(" or ")}, got '$v'"
+            )
+        )
+        .action((v, o) => o.copy(sampler = SamplerKind.named(v)))
+        .text(
+          s"path mode: the random numbers, ${SamplerKind.Default.name} (the default) or independent"
+        ),
       opt[Unit]('t', "time")
         .action((_, o) => o.copy(timing = true))
         .text("print 'Tracetime: N ms', the rendering time, on standard output"),
@@ -178,7 +241,7 @@ object Options:
           if v >= 1 && v <= 16 then Right(())
           else Left(s"-a must be an integer from 1 to 16, got $v")
         )
-        .action((v, o) => o.copy(samples = v))
+        .action((v, o) => o.copy(samples = v, antialiased = true))
         .text("antialiasing: average n×n samples a pixel, 1 to 16 (default 1)"),
       opt[String]('g', "gamma")
         .valueName("srgb|G")

@@ -4,6 +4,7 @@ import java.util.concurrent.{Executors, ThreadFactory}
 import scala.concurrent.duration.Duration
 import scala.concurrent.{Await, ExecutionContext, Future}
 import tracer.image.{Bitmap, Colour, Raster}
+import tracer.render.path.PathTracer
 import tracer.scene.Scene
 
 /** Turns a scene into a picture: a pure function of the scene and the camera configuration. */
@@ -85,21 +86,42 @@ object Renderer:
     */
   def sampleOffsets(n: Int): IndexedSeq[Double] = (0 until n).map(i => (i + 0.5) / n)
 
-  /** The parts of a picture that every row shares, built once. */
-  private final class Frame(scene: Scene, config: CameraConfig):
-    private val projection = Projection(scene.camera, config)
-    private val world      = World(scene)
-    private val n          = config.samples
-    private val offsets    = Renderer.sampleOffsets(n).toArray
-
+  /** The parts of a picture that every row shares, built once: the camera, the world, and the
+    * integrator's own precomputation.
+    */
+  private abstract class Frame:
     /** Row `y` of the picture, written as row `at` by `write` (from [[Bitmap.byRows]]). */
-    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
-      val shading = Shading(world, config.mode)
-      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y, inRange = true)))
+    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit
 
     /** Row `y` as [[row]] writes it, for floating-point output: unclamped means, not encoded. */
+    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit
+
+  private object Frame:
+    /** The frame of `config`'s integrator. */
+    def apply(scene: Scene, config: CameraConfig): Frame =
+      val projection = Projection(scene.camera, config.film)
+      val world      = World(scene)
+      config.integrator match
+        case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
+        case settings: Integrator.Path   =>
+          PathFrame(PathTracer(scene, world, projection, settings, config.depth), config)
+
+  /** Whitted's frame: n × n regular samples a pixel. */
+  private final class WhittedFrame(
+      world: World,
+      projection: Projection,
+      config: CameraConfig,
+      mode: ShadingMode,
+      n: Int
+  ) extends Frame:
+    private val offsets = Renderer.sampleOffsets(n).toArray
+
+    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+      val shading = Shading(world, mode)
+      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y, inRange = true)))
+
     def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
-      val shading = Shading(world, config.mode)
+      val shading = Shading(world, mode)
       write(at, (x, _) => pixel(shading, x, y, inRange = false))
 
     /** Pixel (x, y): the mean of its n × n samples, each brought into range first when `inRange`
@@ -125,6 +147,18 @@ object Renderer:
             i += 1
           j += 1
         Colour(r, g, b) / (n * n)
+
+  /** The path tracer's frame: a pixel is the mean of its samples, brought into range only as a
+    * whole for an 8-bit file (an unbiased estimate is never clamped sample by sample).
+    */
+  private final class PathFrame(tracer: PathTracer, config: CameraConfig) extends Frame:
+    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+      val task = tracer.task()
+      write(at, (x, _) => config.encoding.encode(task.pixel(x, y).inRange))
+
+    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+      val task = tracer.task()
+      write(at, (x, _) => task.pixel(x, y))
 
   /** Names the worker threads and lets the JVM exit without waiting for them. */
   private object WorkerThreads extends ThreadFactory:

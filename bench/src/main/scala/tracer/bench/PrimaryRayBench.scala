@@ -3,7 +3,7 @@ package tracer.bench
 import java.util.concurrent.TimeUnit
 import org.openjdk.jmh.annotations.*
 import tracer.demo.BenchScenes
-import tracer.render.{CameraConfig, Projection, Shading, ShadingMode, World}
+import tracer.render.{CameraConfig, Integrator, Projection, Shading, ShadingMode, World}
 import tracer.scene.Scene
 
 /** Primary rays alone: a 640×360 quick-mode frame of a built world (`-q`: one ray a pixel, no lights, shadows or
@@ -27,7 +27,9 @@ class PrimaryRayBench:
 
   @Setup def setup(): Unit =
     val scene: Scene = BenchScenes.scene(sceneName)
-    config = CameraConfig.forCamera(scene.camera, 640).copy(mode = ShadingMode.Quick)
+    config = CameraConfig
+      .forCamera(scene.camera, 640)
+      .withIntegrator(Integrator.Whitted(ShadingMode.Quick))
     projection = Projection(scene.camera, config)
     shading = Shading(World(scene), ShadingMode.Quick)
 

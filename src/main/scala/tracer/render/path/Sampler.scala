@@ -1,0 +1,117 @@
+package tracer.render.path
+
+import tracer.render.SamplerKind
+
+/** Path mode's random numbers: each a pure function of (seed, pixel x and y in the whole picture,
+  * sample index j, dimension), so a picture is the same for every thread count, band and run
+  * (docs/rendering.md, The sampler).
+  *
+  * Dimensions 0 and 1 place the sample in its pixel; each vertex of a path then takes its own
+  * block of dimensions ([[Sampler.Dimensions]]).
+  *
+  * @param kind    the Sobol default or independent numbers
+  * @param seed    which of many equally valid noise patterns, ≥ 0
+  * @param samples N, the samples a pixel (the Sobol points are shuffled among the first N)
+  */
+final class Sampler(kind: SamplerKind, seed: Int, samples: Int):
+
+  /** The number of dimension `dim` of sample j of pixel (x, y), uniform in [0, 1). */
+  def uniform(x: Int, y: Int, j: Int, dim: Int): Double = kind match
+    case SamplerKind.Independent => Sampler.unit(Sampler.key(seed, x, y, dim, j).toInt)
+    case SamplerKind.Sobol       => Sampler.first(pair(x, y, j, dim))
+
+  /** Dimensions `dim` and `dim + 1` of sample j of pixel (x, y) as one 2D point, packed in a
+    * long (the first in the high 32 bits): read them with [[Sampler.first]] and
+    * [[Sampler.second]]. The Sobol sampler keeps the pair's two-dimensional stratification.
+    */
+  def pair(x: Int, y: Int, j: Int, dim: Int): Long = kind match
+    case SamplerKind.Independent =>
+      Sampler.key(seed, x, y, dim, j)
+    case SamplerKind.Sobol =>
+      val pixel = Sampler.key(seed, x, y, dim, -1)
+      val index = Sampler.permute(j, samples, pixel.toInt)
+      val a     = Sampler.scramble(Integer.reverse(index), pixel)
+      val b     = Sampler.scramble(Sampler.sobolSecond(index), Sampler.mix(pixel + 1))
+      (a.toLong << 32) | (b & 0xffffffffL)
+
+/** The hash, the Sobol points and their scrambling behind [[Sampler]]. */
+object Sampler:
+  /** How many dimensions each vertex of a path takes: emitter choice (1), point on it (2), lobe
+    * choice (1), direction (2), Russian roulette (1), reflect or refract at glass (1).
+    */
+  val Dimensions: Int = 8
+
+  /** 2⁻³², one step of a 32-bit number read as a fraction. */
+  val TwoToMinus32: Double = 1.0 / (1L << 32)
+
+  /** The first number of a [[Sampler.pair]], in [0, 1). */
+  inline def first(pair: Long): Double = unit((pair >>> 32).toInt)
+
+  /** The second number of a [[Sampler.pair]], in [0, 1). */
+  inline def second(pair: Long): Double = unit(pair.toInt)
+
+  /** A 32-bit pattern as the number bits · 2⁻³² in [0, 1). */
+  inline def unit(bits: Int): Double = (bits & 0xffffffffL) * Sampler.TwoToMinus32
+
+  /** A 64-bit mixing function (pbrt-v4's `MixBits`): every output bit depends on every input bit. */
+  def mix(value: Long): Long =
+    val a = (value ^ (value >>> 31)) * 0x7fb5d329728ea185L
+    val b = (a ^ (a >>> 27)) * 0x81dadef4bc2dd44dL
+    b ^ (b >>> 33)
+
+  /** The hash of (seed, dimension, x, y, j): a counter-based generator's output for those counters. */
+  def key(seed: Int, x: Int, y: Int, dim: Int, j: Int): Long =
+    val a = mix((seed.toLong << 32) | (dim & 0xffffffffL))
+    val b = mix(a ^ ((x.toLong << 32) | (y & 0xffffffffL)))
+    mix(b ^ (j & 0xffffffffL) ^ 0x9e3779b97f4a7c15L)
+
+  // The second Sobol dimension's generator matrix (primitive polynomial x + 1): column i is
+  // m_i = m_{i−1} xor (m_{i−1} >> 1) from m_0 = 2³¹.
+  private val secondColumns: Array[Int] = Array.iterate(0x80000000, 32)(m => m ^ (m >>> 1))
+
+  /** The second Sobol dimension at `index`, as 32 bits (the first is the bit reversal). */
+  def sobolSecond(index: Int): Int =
+    // Perf: xor of the columns of the index's set bits, no collection.
+    var bits   = index
+    var column = 0
+    var value  = 0
+    while bits != 0 do
+      if (bits & 1) != 0 then value ^= secondColumns(column)
+      bits >>>= 1
+      column += 1
+    value
+
+  /** A Sobol value Owen-scrambled by `key` (pbrt-v4's `FastOwenScrambler`), then digitally
+    * shifted by more of the key's bits, which makes each point exactly uniform.
+    */
+  def scramble(value: Int, key: Long): Int =
+    val seed = key.toInt
+    val r0   = Integer.reverse(value)
+    val r1   = r0 ^ (r0 * 0x3d20adea)
+    val r2   = (r1 + seed) * ((seed >>> 16) | 1)
+    val r3   = r2 ^ (r2 * 0x05526c56)
+    val r4   = r3 ^ (r3 * 0x53a22864)
+    Integer.reverse(r4) ^ (key >>> 32).toInt
+
+  /** Element `i` of a pseudo-random permutation of 0 until `n` chosen by `p` (Kensler's hashed
+    * permutation, as pbrt-v4's `PermutationElement`): a bijection of 0 until `n` for each `p`.
+    */
+  def permute(i: Int, n: Int, p: Int): Int =
+    var w = n - 1
+    w |= w >>> 1
+    w |= w >>> 2
+    w |= w >>> 4
+    w |= w >>> 8
+    w |= w >>> 16
+    // Perf: cycle-walking in ints, as Kensler's paper gives it: an index outside 0 until n is
+    // hashed again until it falls inside.
+    var v = i
+    while
+      v ^= p; v *= 0xe170893d; v ^= p >>> 16; v ^= (v & w) >>> 4
+      v ^= p >>> 8; v *= 0x0929eb3f; v ^= p >>> 23; v ^= (v & w) >>> 1
+      v *= 1 | p >>> 27; v *= 0x6935fa69; v ^= (v & w) >>> 11; v *= 0x74dcb303
+      v ^= (v & w) >>> 2; v *= 0x9e501cc3; v ^= (v & w) >>> 2; v *= 0xc860a3df
+      v &= w; v ^= v >>> 5
+      Integer.compareUnsigned(v, n) >= 0
+    do ()
+    Integer.remainderUnsigned(v + p, n)

@@ -1,0 +1,67 @@
+package tracer.render.path
+
+import tracer.geometry.{Ray, Shape}
+import tracer.math.Vec3
+import tracer.render.{Query, Refraction, Shading, World}
+
+/** How much of a light reaches a point along a shadow ray in path mode: the product of the
+  * `transmit` t of every clear (η = 1) surface crossed, 0 as soon as an opaque surface or
+  * refracting glass (η ≠ 1) is met (a path reaches a light through glass only by refraction,
+  * which the paths themselves sample).
+  *
+  * Not thread-safe: it uses `query`, the thread's scratch space.
+  */
+final class Visibility(world: World, query: Query):
+
+  /** The share of light from `from` along unit `direction` that crosses every surface before
+    * `reach` (+∞ for the sky).
+    */
+  def along(from: Vec3, direction: Vec3, reach: Double): Double =
+    if !world.transmits then
+      if world.occludedAlong(
+          from.x,
+          from.y,
+          from.z,
+          direction.x,
+          direction.y,
+          direction.z,
+          reach,
+          query
+        )
+      then 0.0
+      else 1.0
+    else walk(from, direction, reach)
+
+  /** The walk from surface to surface for a world where some surface transmits.
+    *
+    * Perf: the walk's state in locals; the origin moves past each clear surface crossed.
+    */
+  private def walk(from: Vec3, direction: Vec3, reach: Double): Double =
+    var origin = from
+    var left   = reach
+    var share  = 1.0
+    while share > 0 && left > 0 do
+      val i = world.nearestAlong(
+        origin.x,
+        origin.y,
+        origin.z,
+        direction.x,
+        direction.y,
+        direction.z,
+        left,
+        query
+      )
+      val t = query.distance
+      if i >= 0 && t < left then
+        val leaf =
+          if world.hasLeafSurfaces(i) then
+            Shape.hitAt(world.shape(i), Ray(origin, direction), t).leaf
+          else 0
+        val surface = world.surface(i, leaf)
+        val clear   = Math.abs(world.surface(i).ior - 1) < Refraction.SameIndex
+        share = if clear then share * surface.transmit else 0.0
+        val step = t + Shading.Epsilon
+        origin = origin + direction * step
+        left -= step
+      else left = 0
+    share
