@@ -3,7 +3,7 @@ package tracer.cli
 import java.io.{InputStream, PrintStream}
 import java.nio.file.Path
 import scala.util.control.NonFatal
-import tracer.image.Bitmap
+import tracer.image.{Bitmap, ImageFile, ImageFormat}
 import tracer.io.{Images, OutputFile}
 import tracer.render.{CameraConfig, Film, Integrator, Renderer, SamplerKind, ShadingMode}
 import tracer.scene.Scene
@@ -44,7 +44,12 @@ object Main:
           out.println(line)
           Success
         case Command.Stack(bands, output) =>
-          Stack.write(bands, output, cwd).fold(fail(Failure, _), _ => Success)
+          Stack
+            .sameKind(bands, output)
+            .fold(
+              why => fail(UsageError, s"$why (see tracer --help)"),
+              _ => Stack.write(bands, output, cwd).fold(fail(Failure, _), _ => Success)
+            )
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
           render(options, in, err, cwd).fold(
@@ -79,18 +84,37 @@ object Main:
   ): Either[Problem, Long] =
     def failure(message: String) = Problem(Failure, message)
     val output                   = cwd.resolve(options.output)
+    val format                   = ImageFile.formatFor(output.getFileName.toString)
     for
+      _     <- floatWithoutEncoding(options, format)
       _     <- OutputFile.checkWritable(output).left.map(failure)
       scene <- Inputs.scene(options, in, err, cwd).left.map(failure)
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)
-      threads         = options.threads.getOrElse(Renderer.defaultThreads)
-      (image, millis) = timed(
-        withProgress(err, band.size)(Renderer.render(scene, config, threads, _, band))
+      threads           = options.threads.getOrElse(Renderer.defaultThreads)
+      (picture, millis) = timed(
+        withProgress(err, band.size)(onRow =>
+          // .pfm and .exr hold the linear values; the 8-bit formats the range rule and -g.
+          if format.isFloat then Left(Renderer.renderRaster(scene, config, threads, onRow, band))
+          else Right(Renderer.render(scene, config, threads, onRow, band))
+        )
       )
-      _ <- Images.save(image, output).left.map(failure)
+      _ <- picture.fold(Images.save(_, output), Images.save(_, output)).left.map(failure)
     yield millis
+
+  /** Refuses `-g` (any value, even 1) with a floating-point output: `.pfm` and `.exr` hold the
+    * linear values, which no encoding touches.
+    */
+  private def floatWithoutEncoding(options: Options, format: ImageFormat): Either[Problem, Unit] =
+    if format.isFloat && options.encodingGiven then
+      Left(
+        Problem(
+          UsageError,
+          s"-g encodes 8-bit output only: ${options.output} holds linear floats (see tracer --help)"
+        )
+      )
+    else Right(())
 
   /** Renders every frame of the batch list `list` in this one process, each as `-i SCENE OUTPUT`
     * (with `-R a:b` when its line gives rows) and `options`; with `-t`, prints

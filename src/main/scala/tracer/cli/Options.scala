@@ -19,6 +19,8 @@ import tracer.render.{CameraConfig, Integrator, SamplerKind}
   * @param height  `-h`, the image height in world units H
   * @param samples `-a n`, n × n antialiasing samples a pixel
   * @param encoding `-g`, how the output is encoded
+  * @param encodingGiven true when `-g` was given at all (even `-g 1`), which a `.pfm` or `.exr`
+  *   output refuses
   * @param band    `-R a:b`, the rows a until b to render, when only a band is wanted
   * @param input   `-i FILE`, the scene file; standard input when absent
   * @param version `--version`, print the version instead of rendering
@@ -45,6 +47,7 @@ final case class Options(
     height: Option[Double] = None,
     samples: Int = 1,
     encoding: Encoding = Encoding.Linear,
+    encodingGiven: Boolean = false,
     band: Option[Range] = None,
     input: Option[String] = None,
     version: Boolean = false,
@@ -246,7 +249,9 @@ object Options:
       opt[String]('g', "gamma")
         .valueName("srgb|G")
         .validate(v => Encoding.parse(v).map(_ => ()))
-        .action((v, o) => o.copy(encoding = Encoding.parse(v).getOrElse(Encoding.Linear)))
+        .action((v, o) =>
+          o.copy(encoding = Encoding.parse(v).getOrElse(Encoding.Linear), encodingGiven = true)
+        )
         .text("encode the output for display: srgb, or a gamma G > 0 (default 1, linear)"),
       opt[String]('R', "rows")
         .valueName("a:b")
@@ -264,7 +269,9 @@ object Options:
         .valueName("FILE")
         .unbounded()
         .action((v, o) => o.copy(stack = o.stack :+ v))
-        .text("repeated: write OUTPUT as these PPM/PNG images one below the other, no rendering"),
+        .text(
+          "repeated: write OUTPUT as these images (all PPM/PNG or all PFM/EXR) one below the other"
+        ),
       opt[String]("batch")
         .valueName("LIST")
         .action((v, o) => o.copy(batch = Some(v)))
@@ -276,7 +283,7 @@ object Options:
       arg[String]("OUTPUT")
         .optional()
         .action((v, o) => o.copy(output = v))
-        .text("the image file to write: .png for PNG, anything else for binary PPM"),
+        .text("the image file to write: .png PNG, .pfm/.exr linear floats, else binary PPM"),
       note(
         "\nGiven three of -w -h -x -y, the fourth keeps the picture undistorted; given fewer," +
           "\nthe scene's width and height and 640 pixels fill in. Exit status: 0 success," +

@@ -1,20 +1,29 @@
 package tracer.io
 
 import java.nio.file.Path
-import tracer.image.{Bitmap, ImageFile}
+import tracer.image.{Bitmap, ImageFile, Raster}
 
 /** Image files by name, for the command line and the REPL. */
 object Images:
 
   /** Writes `bitmap` to the file `name` — PNG for `.png` (any case), else binary PPM — whole or
-    * not at all ([[OutputFile.write]]).
+    * not at all ([[OutputFile.write]]); a `.pfm` or `.exr` name is refused (they hold floats).
     */
   def save(bitmap: Bitmap, name: String): Either[String, Unit] = save(bitmap, Path.of(name))
 
   /** Writes `bitmap` to `path`, its format chosen by the file name as in [[save(bitmap:*]]. */
   def save(bitmap: Bitmap, path: Path): Either[String, Unit] =
     val format = ImageFile.formatFor(path.getFileName.toString)
-    OutputFile.write(path)(ImageFile.write(bitmap, format, _))
+    if format.isFloat then Left(s"cannot write '$path': a $format file holds floats, not samples")
+    else OutputFile.write(path)(ImageFile.write(bitmap, format, _))
+
+  /** Writes `raster` to `path` — Portable FloatMap for `.pfm`, OpenEXR for `.exr` (any case) —
+    * whole or not at all; any other name is refused.
+    */
+  def save(raster: Raster, path: Path): Either[String, Unit] =
+    val format = ImageFile.formatFor(path.getFileName.toString)
+    if !format.isFloat then Left(s"cannot write '$path': floats go to .pfm or .exr, not $format")
+    else OutputFile.write(path)(ImageFile.write(raster, format, _))
 
   /** Reads a PPM or PNG file, recognised by its content. */
   def load(name: String): Either[String, Bitmap] = TextureFiles.read(Path.of(name))

@@ -2,7 +2,7 @@ package tracer.io
 
 import tracer.image.Colour
 import tracer.math.Vec3
-import tracer.scene.{AreaLight, Camera, Light}
+import tracer.scene.{AreaLight, Camera, Fade, Light}
 
 /** Reads `<camera>` and `<light>` (with version 2's `<area>`). */
 private[io] object LightsReader:
@@ -27,16 +27,34 @@ private[io] object LightsReader:
       )
     yield Camera(location, lookAt, up, zoom, width, height)
 
-  /** A `<light>`. */
+  /** A `<light>`, with version 4's `fade-distance` and `fade-power`. */
   def light(e: Element): Result[Light] =
     for
-      children <- contents(e, Vocabulary.NoNames, Vocabulary.LightChildren)
+      children <- contents(e, Vocabulary.LightAttributes, Vocabulary.LightChildren)
+      fade     <- this.fade(e)
       location <- requiredVector(e, children, "location")
       colour   <- atMostOne(e, children, "colour", "color").flatMap(
         _.fold(Right(Colour.White))(colour(_, Double.PositiveInfinity))
       )
       area <- atMostOne(e, children, "area").flatMap(traverseOption(_)(areaLight))
-    yield Light(location, colour, area)
+    yield Light(location, colour, area, fade)
+
+  /** The light's fall-off (version 4): `fade-distance` and `fade-power` both, each greater than
+    * 0, or neither.
+    */
+  private def fade(e: Element): Result[Option[Fade]] =
+    def above0(key: String) = number(e, key).flatMap(traverseOption(_) { v =>
+      if v > 0 then Right(v) else e.fail(s"attribute $key must be greater than 0, got ${show(v)}")
+    })
+    for
+      distance <- above0("fade-distance")
+      power    <- above0("fade-power")
+      fade     <- (distance, power) match
+        case (Some(d), Some(n)) => Right(Some(Fade(d, n)))
+        case (None, None)       => Right(None)
+        case (Some(_), None)    => e.fail("attribute fade-distance needs fade-power beside it")
+        case (None, Some(_))    => e.fail("attribute fade-power needs fade-distance beside it")
+    yield fade
 
   /** An `<area samples-a samples-b>` with its axes `<a>` and `<b>` (scene-format-v2). */
   private def areaLight(e: Element): Result[AreaLight] =

@@ -10,8 +10,8 @@ import tracer.scene.*
   *
   * Numbers are written exactly (shortest round-trip decimal), so reading the text back gives the
   * same scene; a texture is written as its `name`, which must be the file it can be loaded from.
-  * Version 2 attributes are written only where they differ from their defaults, so a version 1
-  * scene is written as version 1. A mesh triangle with smooth normals or texture coordinates at
+  * Version 2 attributes (and version 4's emission and fade) are written only where they differ
+  * from their defaults, so a version 1 scene is written as version 1. A mesh triangle with smooth normals or texture coordinates at
   * its corners has no element of its own (only `<mesh>` makes them) and is refused, rather than
   * written without them. Version 3 solids and combinations are written with their placement, and
   * a child of a combination with its surface where it differs from the one it would inherit.
@@ -30,7 +30,10 @@ object SceneWriter:
         s"""<area samples-a="${a.samplesA}" samples-b="${a.samplesB}">""" +
           s"""${vector("a", a.a)}${vector("b", a.b)}</area>"""
       )
-      lines += s"  <light>${vector("location", l.location)}${colour("colour", l.colour)}$area</light>"
+      val fade = l.fade.fold("")(f =>
+        s""" fade-distance="${number(f.distance)}" fade-power="${number(f.power)}""""
+      )
+      lines += s"  <light$fade>${vector("location", l.location)}${colour("colour", l.colour)}$area</light>"
     }
     scene.objects.foreach(o => lines += s"  ${sceneObject(o)}")
     lines += "</scene>"
@@ -160,8 +163,9 @@ object SceneWriter:
       ("transmit", s.transmit, defaults.transmit),
       ("ior", s.ior, defaults.ior)
     ).collect { case (key, value, default) if value != default => s""" $key="${number(value)}"""" }
+    val emission = if s.emission != defaults.emission then colour("emission", s.emission) else ""
     s"""<surface diffuse="${number(s.diffuse)}" reflection="${number(s.reflection)}"""" +
-      s"""${extras.mkString}>$pigment</surface>"""
+      s"""${extras.mkString}>$pigment$emission</surface>"""
 
   private def vector(name: String, v: Vec3): String =
     s"""<$name x="${number(v.x)}" y="${number(v.y)}" z="${number(v.z)}"/>"""

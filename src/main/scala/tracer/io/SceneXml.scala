@@ -1,14 +1,16 @@
 package tracer.io
 
 import scala.collection.mutable
-import tracer.image.{Bitmap, Colour}
+import tracer.image.{Colour, Texels}
 import tracer.scene.*
 
 /** Reads scenes in the XML format of `scene-format.md` into [[tracer.scene.Scene]] values. */
 object SceneXml:
 
-  /** Loads the image a `<texture file="…">` names, or says why it cannot. */
-  type TextureLoader = String => Either[String, Bitmap]
+  /** Loads the image a `<texture file="…">` names (8-bit or floating-point), or says why it
+    * cannot.
+    */
+  type TextureLoader = String => Either[String, Texels]
 
   /** Loads the OBJ file a `<mesh file="…">` names, or says why it cannot. */
   type MeshLoader = String => Either[String, ObjMesh]
@@ -78,7 +80,8 @@ private final class SceneReader(sources: SceneSources) extends XmlVisitor:
       else LightsReader.camera(e).map(c => found = Some(c))
     case "background" =>
       if backdrop.isDefined then e.fail("<scene> may have only one <background>")
-      else colour(e, 1).map(c => backdrop = Some(c))
+      // Version 4: a sky may be brighter than 1 (radiance, as a light's colour is an intensity).
+      else colour(e, Double.PositiveInfinity).map(c => backdrop = Some(c))
     case "light"                         => LightsReader.light(e).map(lights += _)
     case name if Vocabulary.Shapes(name) => shapes.sceneObjects(e).map(objects ++= _)
     case _                               => e.fail("unknown element inside <scene>")

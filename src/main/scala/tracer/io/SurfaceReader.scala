@@ -44,11 +44,13 @@ private[io] final class SurfaceReader(
       roughness  <- bounded(e, "roughness", Surface.DefaultRoughness, AboveZeroToOne)
       transmit   <- bounded(e, "transmit", 0.0, ZeroToOne)
       ior        <- positive(e, "ior", 1.0)
-      _       <- place.iorRefusal.filter(_ => e.attribute("ior").isDefined).fold(Right(()))(e.fail)
-      colour  <- atMostOne(e, children, "colour", "color")
-      texture <- atMostOne(e, children, "texture")
-      checker <- atMostOne(e, children, "checker")
-      _       <- (colour, texture, checker) match
+      _        <- place.iorRefusal.filter(_ => e.attribute("ior").isDefined).fold(Right(()))(e.fail)
+      colour   <- atMostOne(e, children, "colour", "color")
+      texture  <- atMostOne(e, children, "texture")
+      checker  <- atMostOne(e, children, "checker")
+      glow     <- atMostOne(e, children, "emission")
+      emission <- glow.fold(Right(Colour.Black))(ElementRules.colour(_, Double.PositiveInfinity))
+      _        <- (colour, texture, checker) match
         case (Some(_), _, Some(c)) => c.fail("give a <colour> or a <checker>, not both")
         case (_, Some(_), Some(c)) => c.fail("give a <texture> or a <checker>, not both")
         case _                     => Right(())
@@ -66,7 +68,8 @@ private[io] final class SurfaceReader(
       specular,
       roughness,
       transmit,
-      ior
+      ior,
+      emission
     )
 
   private def texture(e: Element, owner: Element, place: SurfacePlace): Result[Texture] =

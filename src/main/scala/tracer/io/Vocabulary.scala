@@ -32,6 +32,9 @@ private[io] object Vocabulary:
   /** `<camera>`'s children. */
   val CameraChildren: Set[String] = Set("location", "lookat", "up")
 
+  /** `<light>`'s attributes (version 4's fall-off). */
+  val LightAttributes: Set[String] = Set("fade-distance", "fade-power")
+
   /** `<light>`'s children. */
   val LightChildren: Set[String] = Set("location", "colour", "color", "area")
 
@@ -82,7 +85,7 @@ private[io] object Vocabulary:
     Set("diffuse", "reflection", "phong", "phong-size", "specular", "roughness", "transmit", "ior")
 
   /** `<surface>`'s children. */
-  val SurfaceChildren: Set[String] = Set("colour", "color", "texture", "checker")
+  val SurfaceChildren: Set[String] = Set("colour", "color", "texture", "checker", "emission")
 
   /** `<checker>`'s attributes. */
   val CheckerAttributes: Set[String] = Set("size")

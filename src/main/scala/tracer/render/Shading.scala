@@ -33,12 +33,18 @@ final class Shading(world: World, mode: ShadingMode):
           // side the ray came from (the geometric side, even where a smooth normal leans).
           val s0      = hit.point + hit.normal * Shading.Epsilon
           val surface = world.surface(i, hit.leaf)
-          lit(surface, pigment(i, hit), normal, normal != hit.normal, s0, ray) +
-            beyond(i, surface, hit, normal, s0, ray, depth, insides)
+          val shaded  =
+            lit(surface, pigment(i, hit), normal, normal != hit.normal, s0, hit.point, ray) +
+              beyond(i, surface, hit, normal, s0, ray, depth, insides)
+          // Version 4: a glowing surface adds its emission where it is seen from the side it
+          // emits from (its outward side), after shading; it lights nothing else.
+          if surface.emits && hit.front then shaded + surface.emission else shaded
 
   /** The light the surface sends back from every light that reaches S0: diffuse
     * C ⊙ colour(L) · diffuse · (1 − transmit) · |rn · Sd| and white highlights colour(L) ·
-    * (phong + specular terms), each light scaled by the share of it that reaches S0.
+    * (phong + specular terms), each light scaled by the share of it that reaches S0 and by its
+    * fade A(d) (version 4), d the distance from the hit `point` to the light (an area light's
+    * centre), as POV-Ray measures it.
     *
     * `leaning` says that `normal` is a smooth mesh's interpolated normal, not the face's own.
     *
@@ -51,6 +57,7 @@ final class Shading(world: World, mode: ShadingMode):
       normal: Vec3,
       leaning: Boolean,
       s0: Vec3,
+      point: Vec3,
       ray: Ray
   ) =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
@@ -75,9 +82,13 @@ final class Shading(world: World, mode: ShadingMode):
           case None       => shadows.point(s0, sd, reach)
           case Some(area) => shadows.area(s0, light.location, area)
         if share > 0 then
-          val lr     = light.colour.r * share
-          val lg     = light.colour.g * share
-          val lb     = light.colour.b * share
+          // Without fade the share is used as it is (the same bits as before version 4).
+          val reaching =
+            if light.fade.isEmpty then share
+            else share * light.attenuation((light.location - point).length)
+          val lr     = light.colour.r * reaching
+          val lg     = light.colour.g * reaching
+          val lb     = light.colour.b * reaching
           val facing = Math.abs(cos)
           r += colour.r * lr * diffuse * facing
           g += colour.g * lg * diffuse * facing

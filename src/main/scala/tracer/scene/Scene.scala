@@ -1,7 +1,7 @@
 package tracer.scene
 
 import tracer.geometry.Shape
-import tracer.image.{Bitmap, Colour}
+import tracer.image.{Bitmap, Colour, Raster, Texels}
 import tracer.math.{Placement, Vec3}
 
 /** A scene as the XML describes it: a camera, a background, lights and objects, all immutable.
@@ -215,12 +215,25 @@ object Pigment:
 /** An image used as a texture, with the name it was loaded from (for messages).
   *
   * A point (u, v) in [0, 1]² takes the texel at column min(w − 1, ⌊u·w⌋) and row
-  * min(h − 1, ⌊(1 − v)·h⌋): nearest neighbour, v = 1 at the top of the image.
+  * min(h − 1, ⌊(1 − v)·h⌋): nearest neighbour, v = 1 at the top of the image. An 8- or 16-bit
+  * image's texel is sample / maxval; a floating-point one's (version 4) is its value, above 1
+  * included.
   */
-final case class Texture(image: Bitmap, name: String = "texture"):
+final case class Texture(image: Texels, name: String = "texture"):
+  /** The image's width in texels. */
+  val width: Int = image match
+    case b: Bitmap => b.width
+    case r: Raster => r.width
+
+  /** The image's height in texels. */
+  val height: Int = image match
+    case b: Bitmap => b.height
+    case r: Raster => r.height
 
   /** The texel colour at texture coordinates (u, v). */
   def colourAt(u: Double, v: Double): Colour =
-    val column = Math.min(image.width - 1, Math.max(0, Math.floor(u * image.width).toInt))
-    val row    = Math.min(image.height - 1, Math.max(0, Math.floor((1 - v) * image.height).toInt))
-    image(column, row)
+    val column = Math.min(width - 1, Math.max(0, Math.floor(u * width).toInt))
+    val row    = Math.min(height - 1, Math.max(0, Math.floor((1 - v) * height).toInt))
+    image match
+      case b: Bitmap => b(column, row)
+      case r: Raster => r(column, row)

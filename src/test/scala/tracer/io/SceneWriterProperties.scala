@@ -38,7 +38,18 @@ class SceneWriterProperties extends ScalaCheckSuite:
       specular  <- sometimes(0, Gen.choose(0.0, 3.0))
       roughness <- sometimes(Surface.DefaultRoughness, Gen.choose(1e-4, 1.0))
       transmit  <- sometimes(0, unitChannel)
-    yield Surface(diffuse, reflection, pigment, phong, phongSize, specular, roughness, transmit)
+      emission  <- Gen.frequency(1 -> Gen.const(Colour.Black), 1 -> colour)
+    yield Surface(
+      diffuse,
+      reflection,
+      pigment,
+      phong,
+      phongSize,
+      specular,
+      roughness,
+      transmit,
+      emission = emission
+    )
 
   private val sphere =
     for c <- vec; r <- positive; p <- unitVec; s <- surface; ior <- sometimes(1, positive) yield
@@ -140,14 +151,19 @@ class SceneWriterProperties extends ScalaCheckSuite:
     na     <- Gen.choose(1, AreaLight.MaxSamples); nb <- Gen.choose(1, AreaLight.MaxSamples)
   yield AreaLight(a, b, na, nb)
 
+  private val fade = for d <- positive; n <- positive yield Fade(d, n)
+
   private val scene: Gen[Scene] =
     for
       eye        <- vec
       target     <- vec.retryUntil(_ != eye)
       up         <- unitVec.retryUntil(u => u.cross(target - eye).normalised.isDefined)
       zoom       <- positive; width <- positive; height <- positive
-      background <- unitColour
-      lights  <- Gen.listOf(for l <- vec; c <- colour; a <- Gen.option(area) yield Light(l, c, a))
+      background <- Gen.oneOf(unitColour, colour)
+      lights     <- Gen.listOf(
+        for l <- vec; c <- colour; a <- Gen.option(area); f <- Gen.option(fade)
+        yield Light(l, c, a, f)
+      )
       objects <- Gen.listOf(Gen.oneOf(sphere, plane, triangle, version3))
     yield Scene(Camera(eye, target, up, zoom, width, height), background, lights, objects)
 

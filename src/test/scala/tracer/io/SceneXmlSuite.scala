@@ -277,7 +277,7 @@ class SceneXmlSuite extends munit.FunSuite:
       withCamera("<background r=\"0\" g=\"-1\" b=\"0\"/>"),
       Some(1),
       "background",
-      "g must be from 0 to 1"
+      "g must be at least 0, got -1"
     )
     assertError(
       withCamera(

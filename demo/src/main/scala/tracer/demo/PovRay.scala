@@ -8,8 +8,8 @@ import tracer.render.{CameraConfig, Projection}
 import tracer.scene.*
 
 /** Writes a scene in POV-Ray 3.7's scene language, set up to draw the same picture as the tracer
-  * (the "twin" of docs/scene-format.md): no ambient light, no gamma, lights without fall-off,
-  * reflection untinted, the camera of equations 10–16 as POV-Ray's direction, right and up
+  * (the "twin" of docs/scene-format.md): no ambient light, no gamma, lights without fall-off
+  * unless they carry version 4's fade (`fade_distance`, `fade_power`), reflection untinted, the camera of equations 10–16 as POV-Ray's direction, right and up
   * vectors, and version 2's highlights, transmission, refraction, area lights and smooth mesh
   * faces as the finish, pigment, interior, `area_light` and `smooth_triangle` they stand for.
   * Used to compare the two renderers' pictures and speed; textures are not exported (a textured
@@ -48,7 +48,9 @@ object PovRay:
   private def light(l: Light): String =
     val area =
       l.area.fold("")(a => s" area_light ${vec(a.a)}, ${vec(a.b)}, ${a.samplesA}, ${a.samplesB}")
-    s"light_source { ${vec(l.location)} color rgb ${colour(l.colour)}$area }"
+    val fade =
+      l.fade.fold("")(f => s" fade_distance ${num(f.distance)} fade_power ${num(f.power)}")
+    s"light_source { ${vec(l.location)} color rgb ${colour(l.colour)}$area$fade }"
 
   private def sceneObject(o: SceneObject): String =
     shape(o.shape, o, 0, Nil, Nil, Right(o.surface))

@@ -9,7 +9,8 @@ import tracer.io.{SceneWriter, SceneXml}
 
 /** An independent renderer agrees: POV-Ray 3.7, given the same scenes through
   * [[tracer.demo.PovRay]], draws the same pictures to within rounding and a few edge pixels —
-  * the version 1 benchmark scenes, and a scene for each addition of scene format version 2.
+  * the version 1 benchmark scenes, a scene for each addition of scene format version 2, the
+  * version 3 scenes, and version 4's fade.
   */
 class PovRaySuite extends munit.FunSuite:
 
@@ -173,6 +174,9 @@ class PovRaySuite extends munit.FunSuite:
 
   test("area lights' soft shadows match POV-Ray's"):
     version2("area")
+
+  test("version 4's fade on point and area lights matches POV-Ray's fade_distance and fade_power"):
+    version2("fade")
 
   test("smooth meshes match POV-Ray's smooth triangles"):
     version2("smooth")
