@@ -6,7 +6,7 @@ import java.nio.file.{Files, Path}
 import scala.jdk.CollectionConverters.*
 import tracer.image.{Colour, Exr, Pfm, Raster}
 import tracer.io.SceneXml
-import tracer.render.{CameraConfig, Renderer}
+import tracer.render.{CameraConfig, Integrator, Renderer}
 
 /** `.pfm` and `.exr` output from the command (docs/cli.md, Floating-point output): the linear,
   * unclamped picture, `-g` refused with them, bands and `--stack`, a batch's bad frame alone.
@@ -69,7 +69,7 @@ class FloatOutputSuite extends munit.FunSuite:
   dir.test("-a n: the mean of the unclamped samples"): d =>
     assertEquals(run(d, scene, "-x", "16", "-a", "3", "o.pfm").status, 0)
     val s    = SceneXml.parse(scene, _ => Left("none")).fold(e => fail(e.describe), identity)
-    val mean = Renderer.renderRaster(s, CameraConfig.forScene(s, 16).copy(samples = 3), 1)
+    val mean = Renderer.renderRaster(s, CameraConfig.forScene(s, 16).withIntegrator(Integrator.Whitted(samples = 3)), 1)
     assertEquals(pfm(d.resolve("o.pfm")), mean)
 
   dir.test(

@@ -1,11 +1,11 @@
 package tracer.demo
 
-import java.nio.ByteOrder
 import java.nio.file.{Files, Path}
 import tracer.geometry.*
-import tracer.image.{Colour, Encoding, Png, Raster}
+import tracer.image.{Colour, Encoding, Pfm, Png, Raster}
 import tracer.math.{Placement, Vec3}
-import tracer.render.{CameraConfig, Film, Integrator, Renderer}
+import tracer.io.SceneWriter
+import tracer.render.{CameraConfig, Renderer}
 import tracer.scene.*
 import tracer.testkit.Processes
 
@@ -51,7 +51,7 @@ class MitsubaSuite extends munit.FunSuite:
       seconds = 900
     )
     assertEquals(exit.status, 0, exit.err)
-    MitsubaSuite.readPfm(Files.readAllBytes(dir.resolve(out)))
+    Pfm.read(Files.readAllBytes(dir.resolve(out))).fold(fail(_), identity)
 
   private def inTemporaryDirectory[A](body: Path => A): A =
     val dir = Files.createTempDirectory("mitsuba")
@@ -186,15 +186,47 @@ class MitsubaSuite extends munit.FunSuite:
       2
     )
 
+  test("the twin's fade (fade-distance, fade-power): Mitsuba's direct light is Whitted's at -r 0"):
+    val faded =
+      shapes.copy(lights = shapes.lights.zip(Seq(Fade(5, 2), Fade(2, 1.5))).map { (l, f) =>
+        l.copy(fade = Some(f))
+      })
+    val (width, height) = (48, 36)
+    agree(
+      "whitted-fade",
+      faded,
+      Mitsuba.Settings(width, height, 1024, 1),
+      whitted(faded, width, height),
+      0.9,
+      2
+    )
+
   // Path mode against Mitsuba.
 
-  /** Our path-traced picture of `scene` at N samples a pixel and `-r depth`. */
-  private def path(scene: Scene, settings: Mitsuba.Settings, seed: Int = 0): Raster =
-    val c      = scene.camera
-    val film   = Film(c.zoom, c.width, c.height, settings.width, settings.height)
-    val config =
-      CameraConfig(film, Integrator.Path(settings.samples, seed), settings.depth, Encoding.Linear)
-    Renderer.renderRaster(scene, config, threads = 2)
+  /** Our path-traced picture of `scene` at N samples a pixel and `-r depth`, by the real
+    * command: `tracer -m path -s N -r d -x X -y Y -p 2 -i scene.xml out.pfm`.
+    */
+  private def path(scene: Scene, settings: Mitsuba.Settings): Raster =
+    inTemporaryDirectory { dir =>
+      Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(scene))
+      val s    = settings
+      val exit = Processes.run(
+        Seq(
+          home.resolve("tracer").toString,
+          "-m",
+          "path",
+          "-s",
+          s"${s.samples}",
+          "-r",
+          s"${s.depth}"
+        ) ++
+          Seq("-x", s"${s.width}", "-y", s"${s.height}", "-p", "2", "-i", "scene.xml", "ours.pfm"),
+        dir,
+        seconds = 900
+      )
+      assertEquals(exit.status, 0, exit.err)
+      Pfm.read(Files.readAllBytes(dir.resolve("ours.pfm"))).fold(fail(_), identity)
+    }
 
   /** Path mode's picture of `scene` against Mitsuba's: our mean error at most 10% above the
     * mean error between two Mitsuba pictures with different seeds, our PSNR at most 0.5 dB below
@@ -300,28 +332,3 @@ class MitsubaSuite extends munit.FunSuite:
 
   test("glass, a clear pane, a glowing ball and glowing triangles match Mitsuba's at -r 6"):
     pathAgrees("glass", glass, Mitsuba.Settings(48, 36, 512, 6))
-
-/** Reading the `.pfm` pictures the twins write. */
-object MitsubaSuite:
-
-  /** A colour Portable FloatMap (`PF`) as a raster: rows stored bottom up, the byte order by the
-    * sign of the scale.
-    */
-  def readPfm(bytes: Array[Byte]): Raster =
-    def line(from: Int): (String, Int) =
-      val end = bytes.indexOf('\n'.toByte, from)
-      (String(bytes, from, end - from, "US-ASCII").trim, end + 1)
-    val (magic, afterMagic) = line(0)
-    require(magic == "PF", s"not a colour PFM: $magic")
-    val (size, afterSize)    = line(afterMagic)
-    val (scale, start)       = line(afterSize)
-    val Array(width, height) = size.split("\\s+").map(_.toInt): @unchecked
-    val order  = if scale.toDouble < 0 then ByteOrder.LITTLE_ENDIAN else ByteOrder.BIG_ENDIAN
-    val floats =
-      java.nio.ByteBuffer.wrap(bytes, start, bytes.length - start).order(order).asFloatBuffer
-    val values = Array.tabulate(width * height * 3) { i =>
-      val (pixel, channel) = (i / 3, i % 3)
-      val (x, y)           = (pixel % width, pixel / width)
-      floats.get(((height - 1 - y) * width + x) * 3 + channel)
-    }
-    Raster.fromChannels(width, height, values)
