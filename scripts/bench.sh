@@ -110,7 +110,7 @@ if $mitsuba; then
   "$mitsuba_sh" --install
   samples=64; depth=7; side=256
   demo tracer.demo.Mitsuba "$scene" "$side" "$side" "$samples" "$depth" > "$out/twin.py"
-  # rmse A B: the root mean square difference over every channel of two .pfm pictures.
+  # rmse A B: the root mean square difference over every channel of two .pfm pictures, and A's mean.
   rmse() {
     python3 - "$1" "$2" <<'PY'
 import math, struct, sys
@@ -121,7 +121,7 @@ def floats(path):
     order = "<" if float(scale) < 0 else ">"
     return struct.unpack(f"{order}{width * height * 3}f", rest[: width * height * 12])
 a, b = floats(sys.argv[1]), floats(sys.argv[2])
-print(f"{math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / len(a)):.5f}")
+print(f"{math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / len(a)):.5f} | {sum(a) / len(a):.5f}")
 PY
   }
   reference="$dir/cornell-reference.pfm"
@@ -150,14 +150,14 @@ PY
   read -r scalar_wall scalar_inner < <(best_mitsuba scalar_rgb)
   read -r llvm_wall llvm_inner < <(best_mitsuba llvm_ad_rgb)
   ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
-  echo "| cornell ${side}x$side, $samples samples, -r $depth, $threads threads | wall ms | render ms | tracer wall / this (load and render) |"
+  echo "| cornell ${side}x$side, $samples samples, -r $depth, $threads threads | whole process ms | render ms (Mitsuba: load and render) | tracer whole process / Mitsuba load and render |"
   echo "|---|---|---|---|"
-  echo "| tracer -m path | $wall | $trace | 1.00 |"
+  echo "| tracer -m path | $wall | $trace | |"
   echo "| Mitsuba scalar_rgb | $scalar_wall | $scalar_inner | $(ratio "$wall" "$scalar_inner") |"
   echo "| Mitsuba llvm_ad_rgb | $llvm_wall | $llvm_inner | $(ratio "$wall" "$llvm_inner") |"
   echo
-  echo "| error at $samples samples against the reference | RMSE |"
-  echo "|---|---|"
+  echo "| error at $samples samples against the reference (mean $(rmse "$reference" "$reference" | cut -d' ' -f3)) | RMSE | picture mean |"
+  echo "|---|---|---|"
   echo "| tracer, default sampler | $(rmse "$out/ours.pfm" "$reference") |"
   echo "| tracer --sampler independent | $(rmse "$out/independent.pfm" "$reference") |"
   echo "| Mitsuba independent (scalar_rgb) | $(rmse "$out/mitsuba-scalar_rgb.pfm" "$reference") |"

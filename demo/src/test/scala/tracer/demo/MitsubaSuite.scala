@@ -332,3 +332,6 @@ class MitsubaSuite extends munit.FunSuite:
 
   test("glass, a clear pane, a glowing ball and glowing triangles match Mitsuba's at -r 6"):
     pathAgrees("glass", glass, Mitsuba.Settings(48, 36, 512, 6))
+
+  test("the benchmark room (glowing panel, mirror ball, glass ball) matches Mitsuba's at -r 7"):
+    pathAgrees("cornell", BenchScenes.cornell, Mitsuba.Settings(32, 32, 512, 7))
