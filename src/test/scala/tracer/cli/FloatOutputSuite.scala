@@ -69,7 +69,11 @@ class FloatOutputSuite extends munit.FunSuite:
   dir.test("-a n: the mean of the unclamped samples"): d =>
     assertEquals(run(d, scene, "-x", "16", "-a", "3", "o.pfm").status, 0)
     val s    = SceneXml.parse(scene, _ => Left("none")).fold(e => fail(e.describe), identity)
-    val mean = Renderer.renderRaster(s, CameraConfig.forScene(s, 16).withIntegrator(Integrator.Whitted(samples = 3)), 1)
+    val mean = Renderer.renderRaster(
+      s,
+      CameraConfig.forScene(s, 16).withIntegrator(Integrator.Whitted(samples = 3)),
+      1
+    )
     assertEquals(pfm(d.resolve("o.pfm")), mean)
 
   dir.test(
