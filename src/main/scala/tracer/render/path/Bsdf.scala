@@ -177,9 +177,9 @@ final case class Bsdf(
 object Bsdf:
 
   /** The scattering function of `surface` where its colour is `colour` (the texel or checker
-    * cell at the point).
+    * cell at the point), with index `ior` inside (a combination's parts share the whole's).
     */
-  def of(surface: Surface, colour: Colour): Bsdf =
+  def of(surface: Surface, colour: Colour, ior: Double): Bsdf =
     val t = surface.transmit
     Bsdf(
       colour * (surface.diffuse * (1 - t)),
@@ -189,7 +189,7 @@ object Bsdf:
       surface.specular,
       Microfacet.specularAlpha(surface.roughness),
       t,
-      surface.ior
+      ior
     )
 
   /** The unpolarised Fresnel reflectance for a ray meeting a boundary at cos θi (> 0, on the

@@ -18,17 +18,31 @@ import tracer.scene.{Pigment, Scene}
   * @param projection the camera's rays
   * @param settings   N, the seed and the sampler
   * @param depth      d: at most d bounces after the camera ray (a clear pass is not one)
+  * @param strategy   how lights found both ways are counted: the power heuristic (always, but
+  *   for tests), or by one of the two ways alone
   */
 final class PathTracer(
     scene: Scene,
     private[path] val world: World,
     private[path] val projection: Projection,
     settings: Integrator.Path,
-    private[path] val depth: Int
+    private[path] val depth: Int,
+    strategy: PathTracer.Strategy = PathTracer.Strategy.Both
 ):
   private[path] val emitters = Emitters(scene)
   private[path] val sampler  = Sampler(settings.sampler, settings.seed, settings.samples)
   private val samples        = settings.samples
+
+  // True when shadow rays must walk through clear surfaces.
+  private[path] val clear = Visibility.anyClear(scene)
+
+  // The scattering function of every shape whose surface is the same at every point (one plain
+  // colour, no surfaces per leaf), made once.
+  private[path] val bsdfs: IArray[Option[Bsdf]] = IArray.from(scene.objects.map { o =>
+    o.surface.pigment match
+      case Pigment.Solid(c) if o.leafSurfaces.isEmpty => Some(Bsdf.of(o.surface, c, o.surface.ior))
+      case _                                          => None
+  })
 
   /** A tracer for one row task: it keeps scratch space, so no two threads share one. */
   def task(): PathTracer.Task = PathTracer.Task(this)
@@ -36,15 +50,32 @@ final class PathTracer(
   /** The sampled emitters (for tests). */
   def lights: Emitters = emitters
 
+  /** The weight of light found by a path after a smooth bounce of density `path`, where
+    * next-event estimation would draw it with density `light` (> 0).
+    */
+  private[path] def pathWeight(path: Double, light: Double): Double = strategy match
+    case PathTracer.Strategy.Both       => PathTracer.powerHeuristic(path, light)
+    case PathTracer.Strategy.LightsOnly => 0.0
+    case PathTracer.Strategy.PathsOnly  => 1.0
+
+  /** The weight of light found by next-event estimation with density `light` (> 0), where a
+    * bounce would draw it with density `path`.
+    */
+  private[path] def lightWeight(light: Double, path: Double): Double = strategy match
+    case PathTracer.Strategy.Both       => PathTracer.powerHeuristic(light, path)
+    case PathTracer.Strategy.LightsOnly => 1.0
+    case PathTracer.Strategy.PathsOnly  => 0.0
+
   /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
   private def pixel(task: PathTracer.Task, x: Int, y: Int): Colour =
     // Perf: the sum in three locals, no Colour per sample kept.
-    var r = 0.0
-    var g = 0.0
-    var b = 0.0
-    var j = 0
+    var r  = 0.0
+    var g  = 0.0
+    var b  = 0.0
+    val at = sampler.pixel(x, y)
+    var j  = 0
     while j < samples do
-      task.trace(x, y, j)
+      task.trace(x, y, at, j)
       r += task.r
       g += task.g
       b += task.b
@@ -67,6 +98,19 @@ object PathTracer:
   /** The most a path survives Russian roulette with: 0.95, as Mitsuba. */
   val MostSurvival: Double = 0.95
 
+  /** How light that both next-event estimation and the paths can find is counted. */
+  enum Strategy:
+    /** Both ways, weighted by the power heuristic: the renderer's way. */
+    case Both
+
+    /** Next-event estimation alone (the paths find only what it cannot: point lights aside,
+      * light after a mirror or glass, glowing planes, solids and combinations).
+      */
+    case LightsOnly
+
+    /** The paths alone (next-event estimation only for point lights, which no path can find). */
+    case PathsOnly
+
   /** The power heuristic's weight for an estimate of density `a` beside one of density `b`. */
   inline def powerHeuristic(a: Double, b: Double): Double =
     val a2 = a * a
@@ -82,7 +126,7 @@ object PathTracer:
     private val emitters   = tracer.emitters
     private val sampler    = tracer.sampler
     private val query      = world.newQuery()
-    private val visibility = Visibility(world, query)
+    private val visibility = Visibility(world, query, tracer.clear)
     // Why: the last path's radiance, read by the pixel loop (see the class's Perf note).
     private[PathTracer] var r = 0.0
     private[PathTracer] var g = 0.0
@@ -91,9 +135,11 @@ object PathTracer:
     /** Pixel (x, y) of the whole picture: the mean of its N samples, as they are. */
     def pixel(x: Int, y: Int): Colour = tracer.pixel(this, x, y)
 
-    /** Sample j of pixel (x, y): the radiance one path brings back, left in r, g, b. */
-    private[PathTracer] def trace(x: Int, y: Int, j: Int): Unit =
-      val offset = sampler.pair(x, y, j, 0)
+    /** Sample j of pixel (x, y), whose sampler hash is `at`: the radiance one path brings back,
+      * left in r, g, b.
+      */
+    private[PathTracer] def trace(x: Int, y: Int, at: Long, j: Int): Unit =
+      val offset = sampler.pairAt(at, j, 0)
       var ray    =
         tracer.projection.ray(x + Sampler.first(offset), y + Sampler.second(offset))
       // The throughput, what the path has gathered, and its state.
@@ -114,7 +160,7 @@ object PathTracer:
           val sky = world.background
           val w   =
             if lastDensity > 0 && emitters.skyDensity > 0 then
-              powerHeuristic(lastDensity, emitters.skyDensity)
+              tracer.pathWeight(lastDensity, emitters.skyDensity)
             else 1.0
           r += tr * sky.r * w
           g += tg * sky.g * w
@@ -125,15 +171,15 @@ object PathTracer:
           val hit     = Shape.hitAt(shape, ray, query.distance)
           val surface = world.surface(i, hit.leaf)
           if hit.front && surface.emits then
-            val e = surface.emission
-            val w =
-              if lastDensity > 0 && emitters.samples(i) then
-                powerHeuristic(lastDensity, emitters.density(i, lastPoint, hit.point))
-              else 1.0
+            val e     = surface.emission
+            val light = if lastDensity > 0 then emitters.density(i, lastPoint, hit.point) else 0.0
+            val w     = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
             r += tr * e.r * w
             g += tg * e.g * w
             b += tb * e.b * w
-          val bsdf = Bsdf.of(surface, tracer.pigment(i, hit))
+          val bsdf = tracer.bsdfs(i) match
+            case Some(fixed) => fixed
+            case None        => Bsdf.of(surface, tracer.pigment(i, hit), world.surface(i).ior)
           val base = 2 + Sampler.Dimensions * vertex
           vertex += 1
           if bounces >= tracer.depth then
@@ -148,10 +194,10 @@ object PathTracer:
             val normal = Shape.shadingNormal(shape, hit, ray)
             val wi     = -ray.direction
             if bsdf.smooth && !emitters.isEmpty then
-              nextEvent(x, y, j, base, hit, normal, wi, bsdf, tr, tg, tb)
-            val uv      = sampler.pair(x, y, j, base + 4)
-            val fresnel = if bsdf.glass then sampler.uniform(x, y, j, base + 7) else 0.0
-            val choice  = sampler.uniform(x, y, j, base + 3)
+              nextEvent(at, j, base, hit, normal, wi, bsdf, tr, tg, tb)
+            val uv      = sampler.pairAt(at, j, base + 4)
+            val fresnel = if bsdf.glass then sampler.uniformAt(at, j, base + 7) else 0.0
+            val choice  = sampler.uniformAt(at, j, base + 3)
             val s       =
               bsdf.sample(
                 normal,
@@ -173,12 +219,12 @@ object PathTracer:
                 bounces += 1
                 eta *= s.eta
                 lastDensity = s.density
-                lastPoint = hit.point
+                lastPoint = ray.origin
                 val most = Math.max(tr, Math.max(tg, tb))
                 if most <= 0 then going = false
                 else if bounces >= RouletteDepth then
                   val survive = Math.min(most * eta * eta, MostSurvival)
-                  if sampler.uniform(x, y, j, base + 6) >= survive then going = false
+                  if sampler.uniformAt(at, j, base + 6) >= survive then going = false
                   else
                     tr /= survive
                     tg /= survive
@@ -189,8 +235,7 @@ object PathTracer:
       * of it that the shadow ray lets through; added to r, g, b.
       */
     private def nextEvent(
-        x: Int,
-        y: Int,
+        at: Long,
         j: Int,
         base: Int,
         hit: Hit,
@@ -201,17 +246,17 @@ object PathTracer:
         tg: Double,
         tb: Double
     ): Unit =
-      val choice = sampler.uniform(x, y, j, base)
-      val at     = sampler.pair(x, y, j, base + 1)
-      val light  = emitters.sample(hit.point, choice, Sampler.first(at), Sampler.second(at))
+      val choice = sampler.uniformAt(at, j, base)
+      val point  = sampler.pairAt(at, j, base + 1)
+      // The smooth lobes reflect on the path's side only: the light is sought from S0, just off
+      // the face's own plane on that side (as Whitted's shadow rays, so that a point light gives
+      // exactly Whitted's direct light), and the shadow ray stops short of a glowing shape's
+      // point so as not to meet that shape itself.
+      val from  = hit.point + hit.normal * Shading.Epsilon
+      val light = emitters.sample(from, choice, Sampler.first(point), Sampler.second(point))
       if !light.dark then
         val f = bsdf.evaluate(normal, wi, light.direction)
         if f.max > 0 then
-          // The shadow ray starts off the face's own plane, on the side it leaves by; it stops
-          // short of a glowing shape's point so as not to meet that shape itself.
-          val side =
-            if light.direction.dot(hit.normal) >= 0 then Shading.Epsilon else -Shading.Epsilon
-          val from  = hit.point + hit.normal * side
           val reach =
             if light.density == 0 || light.distance.isInfinite then light.distance
             else light.distance - 2 * Shading.Epsilon
@@ -219,7 +264,8 @@ object PathTracer:
           if share > 0 then
             val w =
               if light.density == 0 then share
-              else share * powerHeuristic(light.density, bsdf.density(normal, wi, light.direction))
+              else
+                share * tracer.lightWeight(light.density, bsdf.density(normal, wi, light.direction))
             r += tr * f.r * light.value.r * w
             g += tg * f.g * light.value.g * w
             b += tb * f.b * light.value.b * w

@@ -15,23 +15,41 @@ import tracer.render.SamplerKind
   */
 final class Sampler(kind: SamplerKind, seed: Int, samples: Int):
 
+  /** The hash of pixel (x, y) under this sampler's seed: the handle [[uniformAt]] and [[pairAt]]
+    * take, computed once for all of a pixel's numbers.
+    */
+  def pixel(x: Int, y: Int): Long =
+    Sampler.mix(
+      Sampler.mix(
+        (seed.toLong << 32) ^ 0x5851f42d4c957f2dL
+      ) ^ ((x.toLong << 32) | (y & 0xffffffffL))
+    )
+
   /** The number of dimension `dim` of sample j of pixel (x, y), uniform in [0, 1). */
-  def uniform(x: Int, y: Int, j: Int, dim: Int): Double = kind match
-    case SamplerKind.Independent => Sampler.unit(Sampler.key(seed, x, y, dim, j).toInt)
-    case SamplerKind.Sobol       => Sampler.first(pair(x, y, j, dim))
+  def uniform(x: Int, y: Int, j: Int, dim: Int): Double = uniformAt(pixel(x, y), j, dim)
 
   /** Dimensions `dim` and `dim + 1` of sample j of pixel (x, y) as one 2D point, packed in a
     * long (the first in the high 32 bits): read them with [[Sampler.first]] and
     * [[Sampler.second]]. The Sobol sampler keeps the pair's two-dimensional stratification.
     */
-  def pair(x: Int, y: Int, j: Int, dim: Int): Long = kind match
-    case SamplerKind.Independent =>
-      Sampler.key(seed, x, y, dim, j)
-    case SamplerKind.Sobol =>
-      val pixel = Sampler.key(seed, x, y, dim, -1)
-      val index = Sampler.permute(j, samples, pixel.toInt)
-      val a     = Sampler.scramble(Integer.reverse(index), pixel)
-      val b     = Sampler.scramble(Sampler.sobolSecond(index), Sampler.mix(pixel + 1))
+  def pair(x: Int, y: Int, j: Int, dim: Int): Long = pairAt(pixel(x, y), j, dim)
+
+  /** [[uniform]] for the pixel whose [[pixel]] hash is `at`. */
+  def uniformAt(at: Long, j: Int, dim: Int): Double = kind match
+    case SamplerKind.Independent => Sampler.unit(Sampler.sampleKey(at, dim, j).toInt)
+    case SamplerKind.Sobol       =>
+      val key   = Sampler.dimensionKey(at, dim)
+      val index = Sampler.permute(j, samples, key.toInt)
+      Sampler.unit(Sampler.scramble(Integer.reverse(index), key))
+
+  /** [[pair]] for the pixel whose [[pixel]] hash is `at`. */
+  def pairAt(at: Long, j: Int, dim: Int): Long = kind match
+    case SamplerKind.Independent => Sampler.sampleKey(at, dim, j)
+    case SamplerKind.Sobol       =>
+      val key   = Sampler.dimensionKey(at, dim)
+      val index = Sampler.permute(j, samples, key.toInt)
+      val a     = Sampler.scramble(Integer.reverse(index), key)
+      val b     = Sampler.scramble(Sampler.sobolSecond(index), Sampler.mix(key + 1))
       (a.toLong << 32) | (b & 0xffffffffL)
 
 /** The hash, the Sobol points and their scrambling behind [[Sampler]]. */
@@ -59,27 +77,29 @@ object Sampler:
     val b = (a ^ (a >>> 27)) * 0x81dadef4bc2dd44dL
     b ^ (b >>> 33)
 
-  /** The hash of (seed, dimension, x, y, j): a counter-based generator's output for those counters. */
-  def key(seed: Int, x: Int, y: Int, dim: Int, j: Int): Long =
-    val a = mix((seed.toLong << 32) | (dim & 0xffffffffL))
-    val b = mix(a ^ ((x.toLong << 32) | (y & 0xffffffffL)))
-    mix(b ^ (j & 0xffffffffL) ^ 0x9e3779b97f4a7c15L)
+  /** The hash of a pixel's dimension `dim` (from [[Sampler.pixel]]'s hash `at`). */
+  inline def dimensionKey(at: Long, dim: Int): Long = mix(at ^ (dim * 0x9e3779b97f4a7c15L))
+
+  /** The hash of sample j's dimension `dim` of a pixel: a counter-based generator's output. */
+  inline def sampleKey(at: Long, dim: Int, j: Int): Long =
+    mix(dimensionKey(at, dim) ^ ((j & 0xffffffffL) * 0xd1b54a32d192ed03L))
 
   // The second Sobol dimension's generator matrix (primitive polynomial x + 1): column i is
-  // m_i = m_{i−1} xor (m_{i−1} >> 1) from m_0 = 2³¹.
+  // m_i = m_{i−1} xor (m_{i−1} >> 1) from m_0 = 2³¹; and from it the xor of the columns of
+  // every byte value at each of the index's four bytes.
   private val secondColumns: Array[Int] = Array.iterate(0x80000000, 32)(m => m ^ (m >>> 1))
+  private val secondBytes: Array[Int]   = Array.tabulate(4 * 256) { k =>
+    val (byte, value) = (k / 256, k % 256)
+    (0 until 8)
+      .filter(b => (value & (1 << b)) != 0)
+      .map(b => secondColumns(8 * byte + b))
+      .foldLeft(0)(_ ^ _)
+  }
 
   /** The second Sobol dimension at `index`, as 32 bits (the first is the bit reversal). */
   def sobolSecond(index: Int): Int =
-    // Perf: xor of the columns of the index's set bits, no collection.
-    var bits   = index
-    var column = 0
-    var value  = 0
-    while bits != 0 do
-      if (bits & 1) != 0 then value ^= secondColumns(column)
-      bits >>>= 1
-      column += 1
-    value
+    secondBytes(index & 0xff) ^ secondBytes(256 + ((index >>> 8) & 0xff)) ^
+      secondBytes(512 + ((index >>> 16) & 0xff)) ^ secondBytes(768 + (index >>> 24))
 
   /** A Sobol value Owen-scrambled by `key` (pbrt-v4's `FastOwenScrambler`), then digitally
     * shifted by more of the key's bits, which makes each point exactly uniform.
@@ -112,6 +132,6 @@ object Sampler:
       v *= 1 | p >>> 27; v *= 0x6935fa69; v ^= (v & w) >>> 11; v *= 0x74dcb303
       v ^= (v & w) >>> 2; v *= 0x9e501cc3; v ^= (v & w) >>> 2; v *= 0xc860a3df
       v &= w; v ^= v >>> 5
-      Integer.compareUnsigned(v, n) >= 0
+      v >= n // v ≤ w < 2³¹: never negative
     do ()
-    Integer.remainderUnsigned(v + p, n)
+    ((v + (p & 0xffffffffL)) % n).toInt

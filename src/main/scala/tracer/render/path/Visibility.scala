@@ -4,20 +4,31 @@ import tracer.geometry.{Ray, Shape}
 import tracer.math.Vec3
 import tracer.render.{Query, Refraction, Shading, World}
 
+/** Which worlds need [[Visibility]]'s walk. */
+object Visibility:
+  /** True when some surface of `scene` is clear (transmit > 0 with η = 1). */
+  def anyClear(scene: tracer.scene.Scene): Boolean =
+    scene.objects.exists(o =>
+      o.surfaces.exists(s => s.transmit > 0 && Math.abs(o.surface.ior - 1) < Refraction.SameIndex)
+    )
+
 /** How much of a light reaches a point along a shadow ray in path mode: the product of the
   * `transmit` t of every clear (η = 1) surface crossed, 0 as soon as an opaque surface or
   * refracting glass (η ≠ 1) is met (a path reaches a light through glass only by refraction,
   * which the paths themselves sample).
   *
   * Not thread-safe: it uses `query`, the thread's scratch space.
+  *
+  * @param clear true when some surface of the world is clear, so that shadow rays must walk
+  *   through them; without, any hit blocks the light (glass included)
   */
-final class Visibility(world: World, query: Query):
+final class Visibility(world: World, query: Query, clear: Boolean):
 
   /** The share of light from `from` along unit `direction` that crosses every surface before
     * `reach` (+∞ for the sky).
     */
   def along(from: Vec3, direction: Vec3, reach: Double): Double =
-    if !world.transmits then
+    if !clear then
       if world.occludedAlong(
           from.x,
           from.y,

@@ -1,0 +1,205 @@
+package tracer.render.path
+
+import tracer.geometry.{Plane, Sphere, Triangle}
+import tracer.image.Colour
+import tracer.math.Vec3
+import tracer.render.SamplerKind
+import tracer.scene.{Camera, Fade, Light, Scene, SceneObject, Surface}
+
+/** Path mode against exact answers (docs/rendering.md, Path tracing). Tolerances are stated per
+  * test: k standard errors of the mean, the error estimated from the pixels' own spread (each
+  * pixel an independent estimate of the same value), so a test fails on a biased estimator and
+  * not on noise (k = 5: a false alarm about once in 3.5 million runs).
+  */
+class PathAnalyticSuite extends munit.FunSuite:
+  import PathScenes.*
+
+  private val K = 5.0
+
+  private def assertMean(xs: Seq[Double], expected: Double, floor: Double = 1e-9)(using
+      munit.Location
+  ): Unit =
+    val (mean, error) = meanAndError(xs)
+    val tolerance     = K * error + floor
+    assert(
+      Math.abs(mean - expected) <= tolerance,
+      s"mean $mean is not within $tolerance ($K standard errors $error) of $expected"
+    )
+
+  // The sphere's disc covers the middle pixels of the 1 × 1 picture seen from z = −3.
+  private def onBall(size: Int)(x: Int, y: Int): Boolean =
+    val dx = (x + 0.5) / size - 0.5
+    val dy = (y + 0.5) / size - 0.5
+    dx * dx + dy * dy < 0.25 * 0.25
+
+  for depth <- List(1, 2, 6) do
+    test(s"white furnace: a diffuse ball under a uniform sky B shows kd·B at -r $depth"):
+      val kd    = 0.6
+      val sky   = 1.7 // above 1: a bright sky is allowed
+      val scene = Scene(
+        camera,
+        Colour.grey(sky),
+        Nil,
+        List(SceneObject(ball, Surface(diffuse = kd)))
+      )
+      val raster = render(scene, 24, 64, depth)
+      assertMean(values(raster, onBall(24)), kd * sky)
+      // Far from the ball every pixel is the sky itself, exactly.
+      assertEqualsDouble(raster(0, 0).g, sky, 1e-6)
+
+  test("-r 0 shows only emission and the background: a lit diffuse ball is black"):
+    val scene = Scene(
+      camera,
+      Colour.grey(0.5),
+      List(Light(Vec3(0, 3, -3))),
+      List(SceneObject(ball, Surface(diffuse = 1)))
+    )
+    val raster = render(scene, 16, 4, 0)
+    assertEquals(values(raster, onBall(16)).distinct, IndexedSeq(0.0))
+    assertEqualsDouble(raster(0, 0).g, 0.5, 1e-6)
+
+  // A closed box of inward glowing triangles: every hit adds kd^k·E (k bounces before it).
+  for depth <- List(0, 1, 3, 8) do
+    test(s"a closed glowing box seen from inside shows Σ_{k≤d} kd^k·E at -r $depth"):
+      val (kd, e) = (0.5, 0.8)
+      val scene   = Scene(
+        Camera(Vec3(0.1, -0.2, -0.5), Vec3(0.3, 0, 1), zoom = 1, width = 1.5, height = 1.5),
+        Colour.Black,
+        Nil,
+        inwardCube.map(glowing(_, e, kd))
+      )
+      val raster   = render(scene, 16, 32, depth)
+      val expected = (0 to depth).map(k => Math.pow(kd, k) * e).sum
+      if depth == 0 then
+        assertEquals(values(raster).distinct.map(v => Math.abs(v - e) < 1e-6), IndexedSeq(true))
+      else assertMean(values(raster), expected)
+
+  test("the glowing box's faces glow inwards only: seen from outside it is black"):
+    val scene = Scene(camera, Colour.Black, Nil, inwardCube.map(glowing(_, 1, 0.5)))
+    assertEquals(values(render(scene, 8, 4, 3)).distinct, IndexedSeq(0.0))
+
+  // A point light over the plane y = 0 seen from above: E = π·C·A(d)·cos θ, f = kd/π, so the
+  // pixel is the mean over its samples of kd·C·A(d)·cos θ at the points they see. The samples'
+  // positions come from the sampler itself, so the comparison is exact up to rounding.
+  for fade <- List(None, Some(Fade(1.5, 2)), Some(Fade(0.7, 3))) do
+    test(s"a point light over a plane gives kd·C·A(d)·cos θ at every pixel (fade $fade)"):
+      val kd     = 0.8
+      val colour = 1.3
+      val light  = Light(Vec3(0.2, 2, 0.1), Colour.grey(colour), fade = fade)
+      val eye    =
+        Camera(Vec3(0, 3, 0), Vec3(0, 0, 0), up = Vec3.UnitZ, zoom = 1, width = 1, height = 1)
+      val scene = Scene(
+        eye,
+        Colour.Black,
+        List(light),
+        List(SceneObject(Plane.at(Vec3.UnitY, 0), Surface(diffuse = kd)))
+      )
+      val (size, n) = (8, 16)
+      for depth <- List(1, 4) do
+        val raster     = render(scene, size, n, depth)
+        val film       = tracer.render.Film(1, 1, 1, size, size)
+        val projection = tracer.render.Projection(eye, film)
+        val sampler    = Sampler(SamplerKind.Sobol, 0, n)
+        for y <- 0 until size; x <- 0 until size do
+          val expected = (0 until n).map { j =>
+            val uv  = sampler.pair(x, y, j, 0)
+            val ray = projection.ray(x + Sampler.first(uv), y + Sampler.second(uv))
+            val p   = ray.at(-ray.origin.y / ray.direction.y)
+            val s0  = p + Vec3.UnitY * 1e-4
+            val d   = (light.location - s0).length
+            kd * colour * light.attenuation(d) * (light.location - s0).y / d
+          }.sum / n
+          assertEqualsDouble(
+            raster(x, y).g,
+            expected,
+            1e-5 * expected,
+            s"pixel ($x, $y) at -r $depth"
+          )
+
+  test(
+    "glass neither gains nor loses light in a furnace: a glass ball under a uniform sky shows B"
+  ):
+    val scene = Scene(
+      camera,
+      Colour.grey(1),
+      Nil,
+      List(SceneObject(ball, Surface(diffuse = 0, transmit = 1, ior = 1.5)))
+    )
+    // Deep enough that the light still trapped inside after 64 bounces is far below the noise.
+    val raster = render(scene, 16, 64, 64)
+    assertMean(values(raster, onBall(16)), 1.0)
+
+  test("a clear pane is not a bounce: at -r 0 a glowing panel behind it shows E·t"):
+    val (t, e) = (0.6, 2.0)
+    val panel  = PathScenes.square(Vec3(-2, -2, 1), Vec3(4, 0, 0), Vec3(0, 4, 0))
+    // Normals a × b point along +z, away from the camera: flip the legs to glow towards it.
+    val facing = panel.map(tr => Triangle(tr.t0, tr.t2, tr.t1))
+    val pane   = PathScenes.square(Vec3(-2, -2, 0), Vec3(4, 0, 0), Vec3(0, 4, 0))
+    val scene  = Scene(
+      camera,
+      Colour.Black,
+      Nil,
+      facing.map(glowing(_, e, 0)) ++ pane.map(SceneObject(_, Surface(diffuse = 0.5, transmit = t)))
+    )
+    assertEquals(
+      values(render(scene, 8, 4, 0)).map(v => Math.abs(v - e * t) < 1e-6).distinct,
+      IndexedSeq(true)
+    )
+
+  test("next-event-only and path-only estimates of glowing spheres, triangles and the sky agree"):
+    val floor = PathScenes.square(Vec3(-3, -1, -3), Vec3(0, 0, 6), Vec3(6, 0, 0))
+    val lamp  = Triangle(Vec3(-1, 1.5, 0.5), Vec3(1, 1.5, 0.5), Vec3(0, 1.5, -1))
+    val scene = Scene(
+      camera,
+      Colour(0.2, 0.3, 0.5),
+      Nil,
+      floor.map(SceneObject(_, Surface(diffuse = 0.8, phong = 0.4, phongSize = 10))) ++ List(
+        SceneObject(
+          Sphere(Vec3(0.4, -0.5, 0), 0.5),
+          Surface(diffuse = 0.7, specular = 0.5, roughness = 0.1)
+        ),
+        glowing(Sphere(Vec3(-0.8, 0.3, 0.6), 0.25), 4, 0.5),
+        glowing(lamp, 3, 0)
+      )
+    )
+    val lights = renderWith(scene, 12, 256, 3, PathTracer.Strategy.LightsOnly)
+    val paths  = renderWith(scene, 12, 256, 3, PathTracer.Strategy.PathsOnly)
+    val both   = renderWith(scene, 12, 256, 3, PathTracer.Strategy.Both)
+    // The difference of two independent estimates of the same picture: mean 0 over all pixels.
+    val diff          = values(lights).zip(values(paths)).map(_ - _)
+    val (mean, error) = meanAndError(diff)
+    assert(Math.abs(mean) <= K * error, s"next-event-only minus path-only: $mean ± $error")
+    val (total, _) = meanAndError(values(both))
+    assert(total > 0.05, s"the scene is lit ($total)")
+    val diffBoth      = values(both).zip(values(paths)).map(_ - _)
+    val (mean2, err2) = meanAndError(diffBoth)
+    assert(Math.abs(mean2) <= K * err2, s"combined minus path-only: $mean2 ± $err2")
+
+  test("--seed changes the noise, not the mean"):
+    val scene = Scene(
+      camera,
+      Colour.grey(0.8),
+      List(Light(Vec3(1, 2, -2))),
+      List(SceneObject(ball, Surface(diffuse = 0.7, phong = 0.5)))
+    )
+    val a = render(scene, 16, 16, 3, seed = 0)
+    val b = render(scene, 16, 16, 3, seed = 12345)
+    assertNotEquals(a, b)
+    val diff          = values(a).zip(values(b)).map(_ - _)
+    val (mean, error) = meanAndError(diff)
+    assert(Math.abs(mean) <= K * error, s"seed 0 minus seed 12345: $mean ± $error")
+
+  for sampler <- SamplerKind.values do
+    test(s"the $sampler sampler converges to the same picture as the other"):
+      val scene = Scene(
+        camera,
+        Colour.grey(0.5),
+        List(Light(Vec3(1, 2, -2))),
+        List(SceneObject(ball, Surface(diffuse = 0.7, reflection = 0.2)))
+      )
+      val other         = SamplerKind.values.filter(_ != sampler).head
+      val a             = render(scene, 16, 16, 3, sampler = sampler)
+      val b             = render(scene, 16, 16, 3, sampler = other, seed = 7)
+      val diff          = values(a).zip(values(b)).map(_ - _)
+      val (mean, error) = meanAndError(diff)
+      assert(Math.abs(mean) <= K * error, s"$sampler minus $other: $mean ± $error")

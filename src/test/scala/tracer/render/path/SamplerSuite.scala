@@ -1,0 +1,105 @@
+package tracer.render.path
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.geometry.{Sphere, Triangle}
+import tracer.image.Colour
+import tracer.math.Vec3
+import tracer.render.SamplerKind
+import tracer.scene.{Camera, Scene, SceneObject, Surface}
+
+/** The sampler's numbers and the emitters' densities. */
+class SamplerSuite extends ScalaCheckSuite:
+
+  private val counters =
+    for
+      x   <- Gen.choose(0, 5000)
+      y   <- Gen.choose(0, 5000)
+      j   <- Gen.choose(0, 1000)
+      dim <- Gen.choose(0, 200)
+    yield (x, y, j, dim)
+
+  for kind <- SamplerKind.values do
+    property(s"$kind: every number is in [0, 1) and a pure function of its counters"):
+      forAll(counters, Gen.choose(1, 1 << 20), Gen.choose(0, Int.MaxValue)) {
+        case ((x, y, j, dim), n, seed) =>
+          val a = Sampler(kind, seed, n)
+          val b = Sampler(kind, seed, n)
+          val u = a.uniform(x, y, j % n, dim)
+          assert(u >= 0 && u < 1, s"$u")
+          assertEquals(u, b.uniform(x, y, j % n, dim))
+          assertEquals(a.pair(x, y, j % n, dim), b.pair(x, y, j % n, dim))
+      }
+
+  test(
+    "Sobol: the 16 points of a pixel fill each cell of a 4 × 4 grid and each 16th of a line once"
+  ):
+    val sampler = Sampler(SamplerKind.Sobol, 42, 16)
+    for x <- 0 until 5; dim <- List(0, 4, 12) do
+      val points = (0 until 16).map(j => sampler.pair(x, 3, j, dim))
+      val cells  = points.map(p => ((Sampler.first(p) * 4).toInt, (Sampler.second(p) * 4).toInt))
+      assertEquals(cells.distinct.size, 16)
+      assertEquals(points.map(p => (Sampler.first(p) * 16).toInt).distinct.size, 16)
+      assertEquals(points.map(p => (Sampler.second(p) * 16).toInt).distinct.size, 16)
+
+  test("Sobol is unbiased for any N, not only powers of two: the mean over many pixels is ½"):
+    for n <- List(3, 5, 7, 12) do
+      val sampler = Sampler(SamplerKind.Sobol, 1, n)
+      val xs      = for x <- 0 until 200; y <- 0 until 20; j <- 0 until n
+      yield sampler.uniform(x, y, j, 6)
+      // Uniform numbers: standard deviation 1/√12 each, standard error 1/√(12·count).
+      val error = 1 / Math.sqrt(12.0 * xs.size)
+      assert(Math.abs(xs.sum / xs.size - 0.5) <= 5 * error, s"N = $n: ${xs.sum / xs.size}")
+
+  test("the permutation is a bijection of 0 until n"):
+    for n <- List(1, 2, 5, 16, 100, 1000); p <- List(0, 7, 123456789) do
+      assertEquals((0 until n).map(Sampler.permute(_, n, p)).sorted, 0 until n)
+
+  test("neighbouring pixels, seeds and dimensions get different numbers"):
+    val sampler = Sampler(SamplerKind.Sobol, 0, 64)
+    val values  = for x <- 0 until 8; dim <- 0 until 8 yield sampler.uniform(x, 0, 0, dim)
+    assertEquals(values.distinct.size, values.size)
+    assertNotEquals(
+      Sampler(SamplerKind.Sobol, 1, 64).uniform(0, 0, 0, 0),
+      sampler.uniform(0, 0, 0, 0)
+    )
+
+  private val emitters = Emitters(
+    Scene(
+      Camera(Vec3(0, 0, -5), Vec3.Zero),
+      Colour.grey(0.3),
+      Nil,
+      List(
+        SceneObject(Sphere(Vec3(1, 2, 3), 0.7), Surface(emission = Colour.White)),
+        SceneObject(
+          Triangle(Vec3(-1, 0, 2), Vec3(1, 0, 2), Vec3(0, 1.5, 2.5)),
+          Surface(emission = Colour.White)
+        )
+      )
+    )
+  )
+
+  property("an emitter sample's density is what density() gives for the point it reaches"):
+    forAll(
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-4.0, 0.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0)
+    ) { (x, y, z, choice, u1, u2) =>
+      val p = Vec3(x, y, z)
+      val s = emitters.sample(p, choice, u1, u2)
+      if !s.dark && s.distance.isFinite then
+        val q     = p + s.direction * s.distance
+        val shape = if (q - Vec3(1, 2, 3)).length < 0.7 + 1e-6 then 0 else 1
+        assertEqualsDouble(emitters.density(shape, p, q), s.density, 1e-6 * s.density)
+      else if !s.dark then assertEqualsDouble(s.density, emitters.skyDensity, 0)
+    }
+
+  test("a sphere sampled by solid angle: the estimate of its solid angle is exact"):
+    // ∫ over the cone 1 dω = 2π(1 − cos θmax); each sample's 1/density (choice removed) is that.
+    val sphere = Sphere(Vec3(0, 0, 4), 1)
+    val exact  = 2 * Math.PI * (1 - Math.sqrt(1 - 1.0 / 16))
+    assertEqualsDouble(1 / Emitters.coneDensity(sphere, Vec3.Zero), exact, 1e-12)
