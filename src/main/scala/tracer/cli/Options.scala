@@ -168,7 +168,7 @@ object Options:
         .validate(atLeast("-r", 0))
         .action((v, o) => o.copy(depth = v))
         .text(
-          "depth: the most reflections and refractions a ray can make; with -m path, the most bounces (default 5)"
+          "depth: the most reflections and refractions (-m path: bounces) a ray makes (default 5)"
         ),
       opt[String]('m', "mode")
         .valueName("whitted|path")
@@ -192,7 +192,7 @@ object Options:
         .action((v, o) => o.copy(seed = Some(v)))
         .text("path mode: which noise pattern, 0 <= S < 2^31 (default 0)"),
       opt[String]("sampler")
-        .valueName(SamplerKind.values.map(_.name).mkString("|"))
+        .valueName("KIND")
         .validate(v =>
           SamplerKind
             .named(v)

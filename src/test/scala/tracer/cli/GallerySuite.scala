@@ -44,6 +44,44 @@ class GallerySuite extends munit.FunSuite with Images:
         assertGolden(readImage(output), name.replace(".xml", ""))
       finally Files.delete(output)
 
+  for name <- gallery do
+    test(s"scenes/$name path-traces: every shape, texture and checker, finite and never negative"):
+      val output = Files.createTempFile("gallery", ".pfm")
+      try
+        val err    = ByteArrayOutputStream()
+        val scene  = ByteArrayInputStream(Files.readAllBytes(scenes.resolve(name)))
+        val status = Main.run(
+          List("-m", "path", "-s", "2", "-r", "4", "-x", "32", output.toString),
+          scene,
+          PrintStream(ByteArrayOutputStream()),
+          PrintStream(err),
+          scenes.toAbsolutePath
+        )
+        assertEquals(status, 0, err.toString)
+        val raster = tracer.image.Pfm.read(Files.readAllBytes(output)).fold(fail(_), identity)
+        val values =
+          for y <- 0 until raster.height; x <- 0 until raster.width; c <- 0 until 3
+          yield raster.channel(x, y, c)
+        assert(values.forall(v => v >= 0 && v.isFinite), s"$name: a negative or non-finite pixel")
+        assert(values.exists(_ > 0), s"$name: black")
+      finally Files.delete(output)
+
+  test("scenes/cornell.xml path-traced renders as its reference picture (48 pixels, -s 16)"):
+    val output = Files.createTempFile("gallery", ".png")
+    try
+      val err    = ByteArrayOutputStream()
+      val scene  = ByteArrayInputStream(Files.readAllBytes(scenes.resolve("cornell.xml")))
+      val status = Main.run(
+        List("-m", "path", "-s", "16", "-r", "7", "-x", "48", "-g", "srgb", output.toString),
+        scene,
+        PrintStream(ByteArrayOutputStream()),
+        PrintStream(err),
+        scenes.toAbsolutePath
+      )
+      assertEquals(status, 0, err.toString)
+      assertGolden(readImage(output), "cornell-path")
+    finally Files.delete(output)
+
   test("together the gallery scenes use every element and attribute of docs/scene-format.md"):
     val used = gallery
       .flatMap(n => XML.loadFile(scenes.resolve(n).toFile).descendant_or_self)

@@ -49,7 +49,8 @@ class OptionsSuite extends munit.FunSuite:
         Some(200),
         Some(2),
         Some(1.5),
-        3
+        3,
+        antialiased = true
       )
     )
 

@@ -133,7 +133,10 @@ final case class Bsdf(
     if total <= 0 then Scattered.Absorbed
     else
       val pick = choice * total
-      if pick < diffuseWeight then smoothSample(n, wi, Bsdf.cosineHemisphere(n, u1, u2))
+      if pick < diffuseWeight then
+        val wo = Bsdf.cosineHemisphere(n, u1, u2)
+        if phong <= 0 && specular <= 0 then lambertSample(n, wi, wo)
+        else smoothSample(n, wi, wo)
       else if pick < diffuseWeight + phong then
         smoothSample(n, wi, glossySample(n, wi, alphaP, u1, u2))
       else if pick < diffuseWeight + phong + specular then
@@ -150,6 +153,18 @@ final case class Bsdf(
     val pdf = density(n, wi, wo)
     if pdf <= 0 then Scattered.Absorbed
     else Scattered(wo, evaluate(n, wi, wo) / pdf, pdf, false, true, 1)
+
+  /** [[smoothSample]] where Lambert is the only smooth lobe: the weight is (1 − t)·kd·C over
+    * the chance of choosing it, the same for every direction above n.
+    */
+  private def lambertSample(n: Vec3, wi: Vec3, wo: Vec3): Scattered =
+    val oz = n.dot(wo)
+    if oz <= 0 || n.dot(wi) <= 0 then Scattered.Absorbed
+    else Scattered(wo, lambertWeight, diffuseWeight / total * oz / Math.PI, false, true, 1)
+
+  // (1 − t)·kd·C / (w_D / W): a Lambert sample's weight.
+  private val lambertWeight =
+    if diffuseWeight > 0 then diffuse * (total / diffuseWeight) else Colour.Black
 
   /** A direction drawn by GGX's visible normals: the mirror image of ωi in a sampled microfacet. */
   private def glossySample(n: Vec3, wi: Vec3, alpha: Double, u1: Double, u2: Double): Vec3 =
@@ -209,11 +224,19 @@ object Bsdf:
 
   /** A direction about unit `n` with density cos θ / π, from (u1, u2) uniform in [0, 1). */
   def cosineHemisphere(n: Vec3, u1: Double, u2: Double): Vec3 =
-    val (s, t) = tangents(n)
-    val r      = Math.sqrt(u1)
-    val phi    = 2 * Math.PI * u2
-    s * (r * StrictMath.cos(phi)) + t * (r * StrictMath.sin(phi)) + n * Math.sqrt(
-      Math.max(0.0, 1 - u1)
+    // The frame of [[tangents]], in doubles: this runs at every diffuse bounce.
+    val sign = if n.z >= 0 then 1.0 else -1.0
+    val a    = -1 / (sign + n.z)
+    val b    = n.x * n.y * a
+    val r    = Math.sqrt(u1)
+    val phi  = 2 * Math.PI * u2
+    val p    = r * StrictMath.cos(phi)
+    val q    = r * StrictMath.sin(phi)
+    val h    = Math.sqrt(Math.max(0.0, 1 - u1))
+    Vec3(
+      p * (1 + sign * n.x * n.x * a) + q * b + h * n.x,
+      p * (sign * b) + q * (sign + n.y * n.y * a) + h * n.y,
+      p * (-sign * n.x) + q * (-n.y) + h * n.z
     )
 
   /** Two unit vectors that make a right-handed orthonormal frame with unit `n` (Duff et al.,

@@ -117,6 +117,7 @@ object Sampler:
     * permutation, as pbrt-v4's `PermutationElement`): a bijection of 0 until `n` for each `p`.
     */
   def permute(i: Int, n: Int, p: Int): Int =
+    // Perf: w, the mask of all ones up to n − 1's top bit, by the usual shifts.
     var w = n - 1
     w |= w >>> 1
     w |= w >>> 2

@@ -144,6 +144,7 @@ class BsdfLaws extends ScalaCheckSuite:
     // The expected share of each bin: the density integrated over it (a 24 × 24 midpoint rule).
     val q = 24
     for iz <- 0 until bz; ip <- 0 until bp do
+      // Why: a sum over the quadrature grid, written as the rule reads.
       var mass = 0.0
       for a <- 0 until q; b <- 0 until q do
         val z   = (iz + (a + 0.5) / q) / bz
