@@ -18,8 +18,8 @@
 # 20,000-triangle scene written as <triangle> elements, cast by the tracer's quick mode on one
 # thread (-q -p 1, best Tracetime of N runs) and by scripts/embree-rays.py on one thread (it
 # needs `pip install embreex numpy`; EMBREE_PYTHON names the Python that has them).
-# With --mitsuba it compares path mode with Mitsuba 3 on the benchmark room (scenes/bench/cornell.xml,
-# tracer.demo.BenchScenes.cornell) and its twin (tracer.demo.Mitsuba), 256x256, 64 samples a
+# With --mitsuba it compares path mode with Mitsuba 3 on the benchmark room (scenes/cornell.xml)
+# and its twin (tracer.demo.Mitsuba), 256x256, 64 samples a
 # pixel, -r 7, Russian roulette from the fifth bounce on both sides: the whole `tracer -m path`
 # process against Mitsuba's `scalar_rgb` and `llvm_ad_rgb` (their load and render time, and their
 # whole Python process), all on the same threads; then the error (RMSE over all channels) at
@@ -52,7 +52,7 @@ tracer="$home/tracer"
 # The demo module (the benchmark scenes, the animation, the POV-Ray export) runs from its own jar.
 demo() { "$home/scripts/demo.sh" "$@"; }
 dir="$home/scenes/bench"
-if [ ! -f "$dir/mesh-80000.obj" ] || [ ! -f "$dir/cornell.xml" ]; then
+if [ ! -f "$dir/mesh-80000.obj" ]; then
   echo "bench.sh: generating the benchmark scenes in $dir" >&2
   demo tracer.demo.BenchScenes "$dir"
 fi
@@ -105,7 +105,7 @@ if $embree; then
 fi
 
 if $mitsuba; then
-  scene="$dir/cornell.xml"
+  scene="$home/scenes/cornell.xml"
   mitsuba_sh="$home/scripts/mitsuba.sh"
   "$mitsuba_sh" --install
   samples=64; depth=7; side=256

@@ -24,11 +24,10 @@ object BenchScenes:
     case _         => mesh(Math.round(Math.sqrt(name.stripPrefix("mesh-").toInt / 2.0)).toInt)
 
   /** Writes `NAME.xml` and `NAME.pov` for every scene into `dir`; the meshes' XML names their
-    * triangles in `NAME.obj` through a `<mesh>` element, as a user would. Also writes path mode's
-    * room, `cornell.xml` ([[cornell]]).
+    * triangles in `NAME.obj` through a `<mesh>` element, as a user would.
     */
   def writeAll(dir: Path, depth: Int = CameraConfig.DefaultDepth): Unit =
-    writeCornell(dir)
+    Files.createDirectories(dir)
     names.foreach { name =>
       val s = scene(name)
       Files.writeString(dir.resolve(s"$name.pov"), PovRay.write(s, depth))
@@ -47,48 +46,6 @@ object BenchScenes:
         )
       else Files.writeString(dir.resolve(s"$name.xml"), SceneWriter.write(s))
     }
-
-  /** Writes [[cornell]], path mode's benchmark room, as `cornell.xml` into `dir`. */
-  def writeCornell(dir: Path): Unit =
-    Files.createDirectories(dir)
-    Files.writeString(dir.resolve("cornell.xml"), SceneWriter.write(cornell)): Unit
-
-  /** Path mode's benchmark room (docs/performance.md, Path tracing against Mitsuba 3): a
-    * Cornell-style box of triangles — white floor, ceiling and back wall, a red wall on the left
-    * and a green one on the right, open towards the camera — lit only by a glowing panel of two
-    * triangles under the ceiling, with a mirror ball and a glass ball on the floor.
-    */
-  lazy val cornell: Scene =
-    def quad(corner: Vec3, a: Vec3, b: Vec3, surface: Surface) = List(
-      SceneObject(Triangle(corner, corner + a, corner + b), surface),
-      SceneObject(Triangle(corner + a, corner + a + b, corner + b), surface)
-    )
-    def wall(c: Colour) = Surface(1, 0, Pigment.Solid(c))
-    val white           = wall(Colour.grey(0.75))
-    val (x, y, z)       = (Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0, 0, 2))
-    val walls           =
-      quad(Vec3(-1, 0, 0), x, z, white) ++ quad(Vec3(-1, 2, 0), z, x, white) ++
-        quad(Vec3(-1, 0, 2), y, x, white) ++
-        quad(Vec3(-1, 0, 0), z, y, wall(Colour(0.63, 0.065, 0.05))) ++
-        quad(Vec3(1, 0, 0), y, z, wall(Colour(0.14, 0.45, 0.09)))
-    // The panel faces down: (a × b) of legs along x and z points along −y.
-    val panel =
-      quad(
-        Vec3(-0.35, 1.99, 0.65),
-        Vec3(0.7, 0, 0),
-        Vec3(0, 0, 0.7),
-        Surface(0, emission = Colour(10, 9, 8))
-      )
-    val balls = List(
-      SceneObject(Sphere(Vec3(-0.45, 0.4, 1.3), 0.4), Surface(0, 1)),
-      SceneObject(Sphere(Vec3(0.45, 0.4, 0.7), 0.4), Surface(0, transmit = 1, ior = 1.5))
-    )
-    Scene(
-      Camera(Vec3(0, 1, -3), Vec3(0, 1, 0), zoom = 1.4, width = 1, height = 1),
-      Colour.Black,
-      Nil,
-      walls ++ panel ++ balls
-    )
 
   /** Writes the scenes into the directory named by the first argument (default `scenes/bench`). */
   def main(args: Array[String]): Unit = writeAll(Path.of(args.headOption.getOrElse("scenes/bench")))

@@ -334,4 +334,6 @@ class MitsubaSuite extends munit.FunSuite:
     pathAgrees("glass", glass, Mitsuba.Settings(48, 36, 512, 6))
 
   test("the benchmark room (glowing panel, mirror ball, glass ball) matches Mitsuba's at -r 7"):
-    pathAgrees("cornell", BenchScenes.cornell, Mitsuba.Settings(32, 32, 512, 7))
+    val room  = home.resolve("scenes").resolve("cornell.xml")
+    val scene = tracer.io.SceneXml.load(room, room.getParent).fold(e => fail(e.toString), identity)
+    pathAgrees("cornell", scene, Mitsuba.Settings(32, 32, 512, 7))
