@@ -80,6 +80,9 @@ lazy val demo = project
     Test / baseDirectory := (ThisBuild / baseDirectory).value,
     Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
+    // MitsubaSuite runs the real `tracer` command, which needs the assembled jar.
+    Test / test               := (Test / test).dependsOn(root / assembly).value,
+    Test / testOnly           := (Test / testOnly).dependsOn(root / assembly).evaluated,
     console / initialCommands := (root / console / initialCommands).value + ", tracer.demo.*",
     Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
   )

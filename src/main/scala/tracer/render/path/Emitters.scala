@@ -126,7 +126,8 @@ final class Emitters(scene: Scene):
         val d       = toLight.length
         if d <= 0 then LightSample.Dark
         else
-          val scale = Math.PI * light.attenuation(d) * count / m
+          // Sub-light C/m, chosen with chance 1/m among the grid (MitsubaSuite, lambert).
+          val scale = Math.PI * light.attenuation(d) * count
           LightSample(toLight / d, d, light.colour * scale, 0)
       case Emitter.Ball(_, sphere, emission)  => Emitters.ball(sphere, emission, p, u1, u2, count)
       case Emitter.Face(_, t, emission, area) =>
