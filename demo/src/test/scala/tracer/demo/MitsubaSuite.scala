@@ -208,7 +208,7 @@ class MitsubaSuite extends munit.FunSuite:
     */
   private def path(scene: Scene, settings: Mitsuba.Settings): Raster =
     inTemporaryDirectory { dir =>
-      Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(scene))
+      Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(scene).fold(fail(_), identity))
       val s    = settings
       val exit = Processes.run(
         Seq(

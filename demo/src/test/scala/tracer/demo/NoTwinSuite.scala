@@ -67,7 +67,7 @@ class NoTwinSuite extends munit.FunSuite:
           )
         )
       )
-      Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(scene))
+      Files.writeString(dir.resolve("scene.xml"), SceneWriter.write(scene).fold(fail(_), identity))
       val (width, height) = (48, 36)
       val c               = scene.camera
       val config = CameraConfig(c.zoom, c.width, c.height, width, height, depth = 0, samples = 16)
