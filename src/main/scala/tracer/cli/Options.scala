@@ -91,6 +91,7 @@ object Options:
   def parse(args: Seq[String]): Command =
     val (result, effects) = OParser.runParser(parser, args, Options())
     val errors            = effects.collect { case OEffect.ReportError(message) => message }
+    val conflict          = result.flatMap(pathConflict)
     if effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false } then
       Command.Help(usage)
     else
@@ -101,8 +102,7 @@ object Options:
             s"${named.init.mkString(", ")} and ${named.last} cannot be used together: " +
               "each is a mode of its own"
           )
-        case (Some(options), Nil) if pathConflict(options).isDefined =>
-          Command.UsageError(pathConflict(options).getOrElse(""))
+        case (Some(_), Nil) if conflict.isDefined    => Command.UsageError(conflict.mkString)
         case (Some(options), Nil) if options.version =>
           Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
         case (Some(options @ Options(batch = Some(list))), Nil) =>

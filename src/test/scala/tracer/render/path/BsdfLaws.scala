@@ -172,6 +172,35 @@ class BsdfLaws extends ScalaCheckSuite:
     // Normal incidence: ((η − 1) / (η + 1))².
     assertEqualsDouble(Bsdf.fresnel(1, 1.5)._1, 0.04, 1e-12)
 
+  test("glass: Fresnel's reflectance at oblique angles is Fresnel's formula in sines and tangents"):
+    // An independent form of the same law: with θt from Snell's law (sin θi = η sin θt),
+    // R = ½(sin²(θi − θt)/sin²(θi + θt) + tan²(θi − θt)/tan²(θi + θt)). A wrong s or p term
+    // (their forms swapped, or η on the wrong side) gives other values at every oblique angle.
+    def expected(thetaI: Double, eta: Double) =
+      val thetaT        = Math.asin(Math.sin(thetaI) / eta)
+      def sq(x: Double) = x * x
+      0.5 * (sq(Math.sin(thetaI - thetaT) / Math.sin(thetaI + thetaT)) +
+        sq(Math.tan(thetaI - thetaT) / Math.tan(thetaI + thetaT)))
+    for
+      degrees <- List(10.0, 30.0, 45.0, 60.0, 80.0, 89.0)
+      eta     <- List(1.5, 1.33, 2.4)
+    do
+      val thetaI = Math.toRadians(degrees)
+      assertEqualsDouble(Bsdf.fresnel(Math.cos(thetaI), eta)._1, expected(thetaI, eta), 1e-12)
+    // From inside glass (η = 1/1.5) below the critical angle of 41.8°.
+    for degrees <- List(10.0, 30.0, 41.0) do
+      val thetaI = Math.toRadians(degrees)
+      assertEqualsDouble(
+        Bsdf.fresnel(Math.cos(thetaI), 1 / 1.5)._1,
+        expected(thetaI, 1 / 1.5),
+        1e-12
+      )
+    // Known values: 45° into η = 1.5 reflects 5.024%; at Brewster's angle (tan θB = η) the p
+    // wave is not reflected at all, leaving ½·rs² = 0.0740 (rs = (1 − η²)/(1 + η²)).
+    assertEqualsDouble(Bsdf.fresnel(Math.cos(Math.PI / 4), 1.5)._1, 0.0502399, 1e-7)
+    val rs = (1 - 1.5 * 1.5) / (1 + 1.5 * 1.5)
+    assertEqualsDouble(Bsdf.fresnel(Math.cos(Math.atan(1.5)), 1.5)._1, 0.5 * rs * rs, 1e-12)
+
   test("glass: a refracted direction obeys Snell's law, and radiance is scaled by (n_i/n_t)²"):
     val bsdf = Bsdf(Colour.Black, 0, 0, 0.1, 0, 0.1, 1, 1.5)
     val n    = Vec3.UnitY
