@@ -116,6 +116,46 @@ class PathAnalyticSuite extends munit.FunSuite:
             s"pixel ($x, $y) at -r $depth"
           )
 
+  // An area light of NA × NB sub-lights is NA·NB point lights of C/(NA·NB) each (with the
+  // light's fade, d from each sub-light): at the point a sample sees, the expected value is
+  // Σ kd·(C/(NA·NB))·A(d)·cos θ over the grid. Which sub-light a sample takes is random, so each
+  // pixel differs from its exact value by noise alone, and their mean difference is 0 within K
+  // standard errors (a sub-light weighed C·NA·NB, or C, or not faded, is far outside).
+  for fade <- List(None, Some(Fade(1.2, 2))) do
+    test(s"an area light over a plane is the sum of its sub-lights, C/(NA·NB) each (fade $fade)"):
+      val kd    = 0.7
+      val area  = tracer.scene.AreaLight(Vec3(1.6, 0, 0), Vec3(0, 0, 1.2), 3, 3)
+      val light = Light(Vec3(0.1, 1.5, 0), Colour.grey(2), Some(area), fade)
+      val eye   =
+        Camera(Vec3(0, 3, 0), Vec3(0, 0, 0), up = Vec3.UnitZ, zoom = 1, width = 1, height = 1)
+      val scene = Scene(
+        eye,
+        Colour.Black,
+        List(light),
+        List(SceneObject(Plane.at(Vec3.UnitY, 0), Surface(diffuse = kd)))
+      )
+      val (size, n)  = (16, 16)
+      val raster     = render(scene, size, n, 1)
+      val film       = tracer.render.Film(1, 1, 1, size, size)
+      val projection = tracer.render.Projection(eye, film)
+      val sampler    = Sampler(SamplerKind.Sobol, 0, n)
+      val subLights  =
+        for u <- 0 until 3; v <- 0 until 3 yield light.location + area.offset(u, v)
+      val differences = for y <- 0 until size; x <- 0 until size yield
+        val exact = (0 until n).map { j =>
+          val uv  = sampler.pair(x, y, j, 0)
+          val ray = projection.ray(x + Sampler.first(uv), y + Sampler.second(uv))
+          val s0  = ray.at(-ray.origin.y / ray.direction.y) + Vec3.UnitY * 1e-4
+          subLights.map { at =>
+            val d = (at - s0).length
+            kd * (2.0 / 9) * light.attenuation(d) * (at - s0).y / d
+          }.sum
+        }.sum / n
+        raster(x, y).g - exact
+      val level = raster(size / 2, size / 2).g
+      assert(level > 0.1, s"the plane under the light is lit: $level")
+      assertMean(differences, 0)
+
   test(
     "glass neither gains nor loses light in a furnace: a glass ball under a uniform sky shows B"
   ):
