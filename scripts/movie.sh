@@ -23,7 +23,7 @@
 # FARM_HOSTS, as scripts/still.sh reads them, stand in for MOVIE_JOBS and MOVIE_HOSTS when those
 # are not set. MOVIE_CHUNK sets how many frames one tracer process renders (default: all of them
 # serially, up to 8 a job through GNU parallel).
-# Exit status: 0 success, 1 a frame or the encoding failed, 2 a usage error.
+# Exit status: 0 success, 1 a frame or the encoding failed, 2 a usage error (TRACER_OPTS's too).
 set -uo pipefail
 
 usage() { echo "usage: movie.sh TRACER FRAMES [OUTPUT]" >&2; exit 2; }
@@ -100,6 +100,8 @@ if [ ${#todo[@]} -gt 0 ]; then
   # shellcheck source=scripts/batches.sh
   . "$here/batches.sh"
   render_batches "$tracer" "$count" frame "$jobs" "$hosts" "$chunk" "${todo[@]}" || {
+    status=$?
+    [ "$status" -ne 2 ] || exit 2 # the tracer refused TRACER_OPTS, as render-frames.sh said
     if $farm; then die "the movie stopped because a frame failed; run again to render what is missing"; fi
     exit 1
   }

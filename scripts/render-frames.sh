@@ -12,6 +12,8 @@
 # writes each OUTPUT whole or not at all. As each one finishes, its Tracetime figure goes to OUTPUT
 # without its extension plus .time and a progress line to stderr, so what finished before an
 # interruption counts as done. One that fails is named and the others go on; the status is then 1.
+# When the tracer refuses its options (TRACER_OPTS; its status 2, nothing rendered) that is said
+# once, after the tracer's own message, and the status is 2.
 set -uo pipefail
 
 usage() { echo "usage: render-frames.sh TRACER COUNT KIND N SCENE OUTPUT ROWS [N SCENE OUTPUT ROWS ...]" >&2; exit 2; }
@@ -45,6 +47,11 @@ done
       echo "$kind ${numbers[$i]}/$count: $where ($ms ms)" >&2
     done
   done
+traced=${PIPESTATUS[0]}
+if [ "$traced" -eq 2 ]; then
+  echo "$script: the tracer refused TRACER_OPTS='${TRACER_OPTS:-}' (its message is above)" >&2
+  exit 2
+fi
 
 status=0
 for i in "${!outputs[@]}"; do

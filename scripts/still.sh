@@ -7,7 +7,8 @@
 # TRACER  the full path of the ray tracer program
 # SCENE   the scene file; it is rendered from its own directory, so relative texture and mesh
 #         paths work (as movie.sh renders frames)
-# OUTPUT  the picture: PNG for .png (any case), binary PPM otherwise, written whole or not at all
+# OUTPUT  the picture: PNG for .png (any case), floating point for .pfm or .exr (any case; the
+#         bands are then .pfm), binary PPM otherwise, written whole or not at all
 #
 # Each band is rendered by TRACER -t $TRACER_OPTS as -R a:b, in batches (many bands in one tracer
 # process: tracer --batch), and kept, with its Tracetime, in
@@ -21,7 +22,7 @@
 # sshlogin file: render on those machines too, which must see TRACER, the scene and OUTPUT's
 # directory at the same paths), FARM_BANDS (how many bands; default 4 for each slot, so that fast
 # and slow hosts finish together, and never more than the picture's rows).
-# Exit status: 0 success, 1 a band or the joining failed, 2 a usage error.
+# Exit status: 0 success, 1 a band or the joining failed, 2 a usage error (TRACER_OPTS's too).
 set -uo pipefail
 
 usage() { echo "usage: still.sh TRACER SCENE OUTPUT" >&2; exit 2; }
@@ -56,12 +57,19 @@ out_dir=$(dirname "$output")
 [ -d "$out_dir" ] || die "the directory of OUTPUT '$out_dir' does not exist" 2
 name=$(basename "$output")
 bands_dir="$out_dir/${name%.*}-bands"
+# Bands are 8-bit PPM for an 8-bit picture, 32-bit float PFM for a .pfm or .exr one: --stack joins
+# bands of one kind, and the float bands keep path mode's unclamped mean.
+case "$name" in *.[pP][fF][mM] | *.[eE][xX][rR]) kind=pfm ;; *) kind=ppm ;; esac
 export TRACER_OPTS="${TRACER_OPTS:-}"
 
 # The picture's size, as the tracer resolves it from the scene and the options.
 # shellcheck disable=SC2086 # TRACER_OPTS is a list of options: split it into words.
-size=$(cd "$(dirname "$scene")" && "$tracer" --size $TRACER_OPTS < "$scene") ||
-  die "the tracer cannot render '$scene' with TRACER_OPTS='$TRACER_OPTS' (its message is above)"
+size=$(cd "$(dirname "$scene")" && "$tracer" --size $TRACER_OPTS < "$scene")
+case $? in
+  0) ;;
+  2) die "the tracer refused TRACER_OPTS='$TRACER_OPTS' (its message is above)" 2 ;;
+  *) die "the tracer cannot render '$scene' with TRACER_OPTS='$TRACER_OPTS' (its message is above)" ;;
+esac
 read -r width height <<< "$size"
 whole "the picture's height" "$height"
 
@@ -78,10 +86,10 @@ bands=${FARM_BANDS:-$((4 * slots))}
 [ "$bands" -le "$height" ] || bands=$height
 
 # Finished bands are kept only for the same scene, picture and options.
-key="$width $height $bands $TRACER_OPTS"
+key="$width $height $bands $kind $TRACER_OPTS"
 mkdir -p "$bands_dir" || die "cannot create '$bands_dir'"
 if [ "$(cat "$bands_dir/bands.key" 2>/dev/null)" != "$key" ] || [ "$scene" -nt "$bands_dir/bands.key" ]; then
-  rm -f "$bands_dir"/band-*.ppm "$bands_dir"/band-*.time
+  rm -f "$bands_dir"/band-*.ppm "$bands_dir"/band-*.pfm "$bands_dir"/band-*.time
   printf '%s\n' "$key" > "$bands_dir/bands.key" || die "cannot write '$bands_dir/bands.key'"
 fi
 
@@ -91,10 +99,10 @@ todo=()
 for ((k = 0; k < bands; k++)); do
   a=$((k * height / bands))
   b=$(((k + 1) * height / bands))
-  band=$(printf '%s/band-%04d.ppm' "$bands_dir" "$((k + 1))")
+  band=$(printf '%s/band-%04d.%s' "$bands_dir" "$((k + 1))" "$kind")
   files+=("$band")
-  if [ -f "$band" ] && [ -f "${band%.ppm}.time" ]; then
-    echo "band $((k + 1))/$bands: rows $a:$b (done before, $(cat "${band%.ppm}.time") ms)" >&2
+  if [ -f "$band" ] && [ -f "${band%.*}.time" ]; then
+    echo "band $((k + 1))/$bands: rows $a:$b (done before, $(cat "${band%.*}.time") ms)" >&2
   else
     todo+=("$((k + 1))"$'\t'"$scene"$'\t'"$band"$'\t'"$a:$b")
   fi
@@ -111,6 +119,8 @@ if [ ${#todo[@]} -gt 0 ]; then
   # shellcheck source=scripts/batches.sh
   . "$here/batches.sh"
   render_batches "$tracer" "$bands" band "$jobs" "$hosts" "$chunk" "${todo[@]}" || {
+    status=$?
+    [ "$status" -ne 2 ] || exit 2 # the tracer refused TRACER_OPTS, as render-frames.sh said
     if $farm; then die "the picture stopped because a band failed; run again to render what is missing"; fi
     exit 1
   }
@@ -120,7 +130,7 @@ fi
 total=0
 stack=()
 for band in "${files[@]}"; do
-  ms=$(cat "${band%.ppm}.time" 2>/dev/null) || die "band $band has no time"
+  ms=$(cat "${band%.*}.time" 2>/dev/null) || die "band $band has no time"
   total=$((total + ms))
   stack+=(--stack "$band")
 done

@@ -12,7 +12,12 @@ class FarmSuite extends MovieWorkspace:
   private val movie  = home.resolve("scripts/movie.sh")
   private val shades = (1 to 6).toList.map(i => s"""r="${i / 6.0}" g="0.5" b="${1 - i / 6.0}"""")
 
-  private def movieRun(d: Path, output: String, env: Map[String, String]): Exit =
+  private def movieRun(
+      d: Path,
+      output: String,
+      env: Map[String, String],
+      options: String = "-x 24 -p 1"
+  ): Exit =
     run(
       List(
         movie.toString,
@@ -20,7 +25,7 @@ class FarmSuite extends MovieWorkspace:
         d.resolve("my frames/frames.txt").toString,
         d.resolve(s"my movies/$output").toString
       ),
-      env = env + ("TRACER_OPTS" -> "-x 24 -p 1")
+      env = env + ("TRACER_OPTS" -> options)
     )
 
   private def frames(d: Path, name: String): Seq[List[Byte]] =
@@ -47,6 +52,28 @@ class FarmSuite extends MovieWorkspace:
     assertEquals(frames(d, "parallel").length, 6)
     assertEquals(total(parallel), Some(frameTimes(d, "parallel").sum))
     assertEquals(parallel.err.linesIterator.count(_.startsWith("frame ")), 6, parallel.err)
+
+  workspace.test("MOVIE_JOBS=2 in path mode: the same frames as a serial run, one seed for all"):
+    d =>
+      writeFrames(d, shades.take(4).map(scene)): Unit
+      val options  = "-x 10 -y 8 -m path -s 4 --seed 3 -p 1"
+      val serial   = movieRun(d, "serial.mp4", Map.empty, options)
+      val parallel =
+        movieRun(d, "parallel.mp4", Map("MOVIE_JOBS" -> "2", "MOVIE_CHUNK" -> "1"), options)
+      assertEquals((serial.status, parallel.status), (0, 0), parallel.err)
+      assertEquals(frames(d, "parallel"), frames(d, "serial"))
+      assertEquals(frames(d, "parallel").length, 4)
+      // Each frame its own process: a per-process seed or noise would differ from the serial batch.
+      assertEquals(calls(d), 8)
+
+  workspace.test("MOVIE_JOBS=2: a usage error in TRACER_OPTS is said once a chunk, status 2"): d =>
+    writeFrames(d, shades.take(2).map(scene)): Unit
+    val e = movieRun(d, "bad.mp4", Map("MOVIE_JOBS" -> "2"), "-x 8 -m path -a 2")
+    assertEquals(e.status, 2, e.err)
+    assert(e.err.contains("tracer: -a is Whitted's antialiasing"), e.err)
+    assert(e.err.contains("movie.sh: the tracer refused TRACER_OPTS="), e.err)
+    assert(!e.err.contains("movie.sh: frame"), e.err)
+    assert(total(e).isEmpty && !Files.exists(d.resolve("my movies/bad.mp4")), e.out)
 
   workspace.test(
     "MOVIE_JOBS=2: a failing frame is named and stops the movie; a rerun renders only what is missing"

@@ -1,6 +1,6 @@
 package tracer
 
-import java.nio.file.Files
+import java.nio.file.{Files, Path}
 import scala.jdk.CollectionConverters.*
 import tracer.testkit.MovieWorkspace
 
@@ -127,6 +127,63 @@ class ScriptsSuite extends MovieWorkspace:
         e.err
       )
       assertEquals(frameTimes(d, "x").length, 1)
+
+  /** The picture `tracer OPTIONS -i SCENE` makes, run alone from the scene's directory. */
+  private def singleRun(d: Path, scene: Path, options: String, name: String): List[Byte] =
+    val e = run(
+      List(
+        "bash",
+        "-c",
+        s"""'${home.resolve("tracer")}' $options -i '$scene' '${d.resolve(name)}'"""
+      ),
+      cwd = scene.getParent
+    )
+    assertEquals(e.status, 0, e.err)
+    Files.readAllBytes(d.resolve(name)).toList
+
+  workspace.test(
+    "path mode: every frame is the bytes of a single run with the same options and seed"
+  ): d =>
+    writeFrames(d, colours.map(scene)): Unit
+    val options = "-x 9 -y 7 -m path -s 4 --seed 3 -p 1"
+    val e       = run(
+      List(
+        movie.toString,
+        d.resolve("logging tracer").toString,
+        d.resolve("my frames/frames.txt").toString,
+        d.resolve("my movies/path.mp4").toString
+      ),
+      env = Map("TRACER_OPTS" -> options)
+    )
+    assertEquals(e.status, 0, e.err)
+    val frames = (1 to 3).map(n =>
+      Files.readAllBytes(d.resolve(f"my movies/path-frames/frame-$n%06d.png")).toList
+    )
+    val alone =
+      colours.indices.map(i => singleRun(d, d.resolve(s"my frames/f$i.xml"), options, s"$i.png"))
+    assertEquals(frames, alone)
+    // The frames are path mode's, not Whitted's.
+    assertNotEquals(frames(0), singleRun(d, d.resolve("my frames/f0.xml"), "-x 9 -y 7", "w.png"))
+    assertEquals(probe(d.resolve("my movies/path.mp4"))._3, 3)
+
+  workspace.test(
+    "a usage error in TRACER_OPTS: the tracer's message, one line saying so, status 2"
+  ): d =>
+    val list = writeFrames(d, colours.take(2).map(scene))
+    val e    = run(
+      List(movie.toString, d.resolve("logging tracer").toString, list.toString, "bad.mp4"),
+      cwd = d,
+      env = Map("TRACER_OPTS" -> "-x 8 -m path -a 2")
+    )
+    assertEquals(e.status, 2, e.err)
+    assert(e.err.contains("tracer: -a is Whitted's antialiasing"), e.err)
+    assert(
+      e.err.contains("movie.sh: the tracer refused TRACER_OPTS='-x 8 -m path -a 2'"),
+      e.err
+    )
+    assert(!e.err.contains("failed"), e.err)
+    assert(!e.out.contains("Total") && !Files.exists(d.resolve("bad.mp4")), e.out)
+    assertEquals(times(d.resolve("bad-frames")).length, 0)
 
   test("movie.sh refuses bad arguments with status 2"):
     assertEquals(run(List(movie.toString)).status, 2)

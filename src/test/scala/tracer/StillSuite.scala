@@ -68,6 +68,40 @@ class StillSuite extends MovieWorkspace:
       assertEquals(e.out.linesIterator.length, 1, e.out)
       assertEquals(e.err.linesIterator.count(_.startsWith("band ")), 4, e.err)
 
+  workspace.test(
+    "path mode: the bands joined are one run's picture, 8-bit and float (.pfm serially, .exr on 2 jobs)"
+  ): d =>
+    val scene = Files.copy(home.resolve("scenes/cornell.xml"), d.resolve("cornell.xml"))
+    val opts  = "-x 12 -y 9 -m path -s 4 --seed 3"
+    val runs  = List(
+      "path.png" -> Map.empty[String, String],
+      "path.pfm" -> Map.empty[String, String],
+      "jobs.exr" -> Map("FARM_JOBS" -> "2")
+    )
+    for (name, env) <- runs do
+      val e =
+        stillRun(d, scene, name, Map("TRACER_OPTS" -> s"$opts -p 1", "FARM_BANDS" -> "5") ++ env)
+      assertEquals(e.status, 0, e.err)
+      assertEquals(e.err.linesIterator.count(_.startsWith("band ")), 5, e.err)
+      assertEquals(Files.readAllBytes(d.resolve(name)).toList, single(d, scene, s"one-$name", opts))
+    // The float bands are PFM (the unclamped mean), not 8-bit pictures.
+    assert(Files.exists(d.resolve("path-bands/band-0005.pfm")))
+    // Another seed is other noise: the comparison above can tell pictures apart.
+    assertNotEquals(
+      Files.readAllBytes(d.resolve("path.pfm")).toList,
+      single(d, scene, "seed.pfm", "-x 12 -y 9 -m path -s 4 --seed 4")
+    )
+
+  workspace.test("a usage error in TRACER_OPTS is the tracer's message and one line, status 2"):
+    d =>
+      val scene = Files.copy(home.resolve("scenes/cornell.xml"), d.resolve("cornell.xml"))
+      val e     = stillRun(d, scene, "bad.png", Map("TRACER_OPTS" -> "-x 8 -m path -a 2"))
+      assertEquals(e.status, 2, e.err)
+      assert(e.err.contains("tracer: -a is Whitted's antialiasing"), e.err)
+      assert(e.err.contains("still.sh: the tracer refused TRACER_OPTS='-x 8 -m path -a 2'"), e.err)
+      assert(!Files.exists(d.resolve("bad.png")) && total(e).isEmpty, e.out)
+      assertEquals(calls(d), 1) // only the size query: no band was started
+
   workspace.test("FARM_JOBS=2 with 7 bands: the same picture, more bands than slots"): d =>
     val scene = textured(d)
     val e     = stillRun(d, scene, "farm.png", Map("FARM_JOBS" -> "2", "FARM_BANDS" -> "7"))
