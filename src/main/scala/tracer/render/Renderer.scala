@@ -27,24 +27,7 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Bitmap =
-    require(threads >= 1, s"threads must be at least 1, got $threads")
-    val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
-    require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
-    val frame = Frame(scene, config)
-    val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
-    try
-      given ExecutionContext = ExecutionContext.fromExecutorService(pool)
-      // A queue of many small row tasks keeps every thread busy however uneven the rows are;
-      // each writes its row straight into the picture (no row bitmaps to stack afterwards).
-      Bitmap.byRows(config.columns, rows.size) { write =>
-        val done = Future.traverse(rows) { y =>
-          Future(RowFailure.guard { frame.row(y - rows.start, y, write); onRow() })
-        }
-        Await.result(done, Duration.Inf)
-      }
-    // Why: rethrows the fatal error a row task carried out (RowFailure), as on this thread.
-    catch case RowFailure(cause) => throw cause
-    finally pool.shutdownNow()
+    inRows(scene, config, threads, onRow, band)((w, h) => Bitmap.byRows(w, h)(_))(_.row)
 
   /** Renders `scene` as [[render]] does, into linear floating-point pixels for a `.pfm` or `.exr`
     * file: each pixel the mean of its samples as they are, neither brought into range nor encoded
@@ -57,22 +40,43 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Raster =
+    inRows(scene, config, threads, onRow, band)((w, h) => Raster.byRows(w, h)(_))(_.linearRow)
+
+  /** The rows of `band` of the picture, one task each on a fixed pool of `threads` threads, each
+    * written by `row` of the frame straight into the image that `image` builds (a [[Bitmap]] or
+    * a [[Raster]], both filled row by row).
+    */
+  private def inRows[A](
+      scene: Scene,
+      config: CameraConfig,
+      threads: Int,
+      onRow: () => Unit,
+      band: Range
+  )(image: (Int, Int) => (Rows => Unit) => A)(row: Frame => RowWriter): A =
     require(threads >= 1, s"threads must be at least 1, got $threads")
     val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
     require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
-    val frame = Frame(scene, config)
+    val write = row(Frame(scene, config))
     val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
     try
       given ExecutionContext = ExecutionContext.fromExecutorService(pool)
-      Raster.byRows(config.columns, rows.size) { write =>
+      // A queue of many small row tasks keeps every thread busy however uneven the rows are;
+      // each writes its row straight into the picture (no row images to stack afterwards).
+      image(config.columns, rows.size) { store =>
         val done = Future.traverse(rows) { y =>
-          Future(RowFailure.guard { frame.linearRow(y - rows.start, y, write); onRow() })
+          Future(RowFailure.guard { write(y - rows.start, y, store); onRow() })
         }
         Await.result(done, Duration.Inf)
       }
     // Why: rethrows the fatal error a row task carried out (RowFailure), as on this thread.
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow(): Unit
+
+  /** What [[Bitmap.byRows]] and [[Raster.byRows]] hand over: store row y from its pixels. */
+  private type Rows = (Int, (Int, Int) => Colour) => Unit
+
+  /** A frame's row writer: row `y` of the picture stored as row `at` through the image's rows. */
+  private type RowWriter = (Int, Int, Rows) => Unit
 
   /** Renders `scene` on the calling thread alone. */
   def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
