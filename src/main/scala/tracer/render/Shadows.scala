@@ -108,32 +108,23 @@ final class Shadows(world: World, query: Query):
         if reach > 0 then pointAlong(from, tx / reach, ty / reach, tz / reach, reach) else 1.0
     grid(k)
 
-  // Perf: in a world that transmits, its opaque and its transmitting objects apart, so a shadow
-  // ray that crosses no transmitting object before the nearest opaque one takes no walk
-  // (docs/performance.md, round 5, step 5).
-  private val opaque = if world.transmits then world.opaquePart else world
-  private val clear  = if world.transmits then world.transmittingPart else world
+  // Perf: in a world that transmits, its transmitting objects apart (often one or two), so a
+  // shadow ray that meets none of them takes the any-hit test, which stops at the first blocker,
+  // instead of the walk (docs/performance.md, round 5, step 5).
+  private val clear = if world.transmits then world.transmittingPart else world
 
   /** [[point]] with the direction as three doubles. The walk's first step finds the nearest
-    * surface: when no transmitting object is crossed at or before the nearest opaque one (at
-    * `reach` when none), that step ends the walk, with 0 at an opaque surface and 1 at none, and
-    * two queries tell it. A ray that does cross one walks the whole world as before: an opaque
-    * object tested from the walk's moved origins may answer otherwise than from `from` in the
-    * last bit (a ray through a mesh's shared edge changed a pixel of `materials.xml`), and the
-    * share must stay what it was.
+    * surface; when no transmitting object is crossed before `reach`, that surface is opaque or
+    * absent, so the share is 0 or 1 as the any-hit test says. A ray that crosses one walks the
+    * whole world as before: an opaque object's test from the walk's moved origins may differ in
+    * the last bit from the one from `from` (a ray through a mesh's shared edge), and the share
+    * must stay what it was.
     */
   private def pointAlong(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
-    if !world.transmits then
-      if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0 else 1.0
-    else
-      val i       = opaque.nearestAlong(from.x, from.y, from.z, dx, dy, dz, reach, query)
-      val blocked = i >= 0 && query.distance < reach
-      // A transmitting crossing at the opaque one's t ties, which the walk may settle either way.
-      val limit = if blocked then Math.nextUp(query.distance) else reach
-      if clear.occludedAlong(from.x, from.y, from.z, dx, dy, dz, limit, query) then
-        transmittance(from, dx, dy, dz, reach)
-      else if blocked then 0.0
-      else 1.0
+    if world.transmits && clear.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query)
+    then transmittance(from, dx, dy, dz, reach)
+    else if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0
+    else 1.0
 
   /** The share [[point]] had before the transmitting objects were tested apart: the walk from
     * hit to hit over every object of the world (the reference it must agree with; tests).

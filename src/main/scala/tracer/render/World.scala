@@ -32,16 +32,8 @@ final class World(scene: Scene):
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
   val transmits: Boolean = objects.exists(World.transmitting)
 
-  /** The world of this one's opaque objects alone (every surface with `transmit` 0), whose
-    * nearest hit bounds the shadow rays' search of the transmitting ones. Built on first use, by
-    * a world that [[transmits]].
-    */
-  private[render] lazy val opaquePart: World =
-    World(Scene(scene.camera, scene.background, Nil, scene.objects.filterNot(World.transmitting)))
-
   /** The world of this one's transmitting objects alone (some surface, a CSG leaf's included,
-    * with `transmit` > 0): a shadow ray that meets none of them before the nearest opaque one
-    * needs no walk.
+    * with `transmit` > 0): a shadow ray that meets none of them needs only the any-hit test.
     * Built on first use, by a world that [[transmits]].
     */
   private[render] lazy val transmittingPart: World =
