@@ -108,32 +108,14 @@ final class Shadows(world: World, query: Query):
         if reach > 0 then pointAlong(from, tx / reach, ty / reach, tz / reach, reach) else 1.0
     grid(k)
 
-  // Perf: in a world that transmits, its transmitting objects apart (often one or two), so a
-  // shadow ray that meets none of them takes the any-hit test, which stops at the first blocker,
-  // instead of the walk (docs/performance.md, round 5, step 5).
-  private val clear = if world.transmits then world.transmittingPart else world
-
-  /** [[point]] with the direction as three doubles. The walk's first step finds the nearest
-    * surface; when no transmitting object is crossed before `reach`, that surface is opaque or
-    * absent, so the share is 0 or 1 as the any-hit test says. A ray that crosses one walks the
-    * whole world as before: an opaque object's test from the walk's moved origins may differ in
-    * the last bit from the one from `from` (a ray through a mesh's shared edge), and the share
-    * must stay what it was.
-    */
+  /** [[point]] with the direction as three doubles. */
   private def pointAlong(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
-    if world.transmits && clear.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query)
-    then transmittance(from, dx, dy, dz, reach)
-    else if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0
-    else 1.0
+    if !world.transmits then
+      if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0 else 1.0
+    else transmittance(from, dx, dy, dz, reach)
 
-  /** The share [[point]] had before the transmitting objects were tested apart: the walk from
-    * hit to hit over every object of the world (the reference it must agree with; tests).
-    */
-  private[render] def walked(from: Vec3, toward: Vec3, reach: Double): Double =
-    transmittance(from, toward.x, toward.y, toward.z, reach)
-
-  /** The product of the `transmit` of every surface the ray from `from` in direction d
-    * crosses before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
+  /** The product of the `transmit` of every surface the ray from `from` in direction d crosses
+    * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
     */
   private def transmittance(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
     // Perf: the walk's state in local doubles, no Vec3 or Ray per step: the origin moves past

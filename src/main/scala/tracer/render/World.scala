@@ -30,14 +30,7 @@ final class World(scene: Scene):
     lights.iterator.flatMap(_.area).map(a => a.samplesA * a.samplesB).maxOption.getOrElse(0)
 
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
-  val transmits: Boolean = objects.exists(World.transmitting)
-
-  /** The world of this one's transmitting objects alone (some surface, a CSG leaf's included,
-    * with `transmit` > 0): a shadow ray that meets none of them needs only the any-hit test.
-    * Built on first use, by a world that [[transmits]].
-    */
-  private[render] lazy val transmittingPart: World =
-    World(Scene(scene.camera, scene.background, Nil, scene.objects.filter(World.transmitting)))
+  val transmits: Boolean = objects.exists(_.surfaces.exists(_.transmit > 0))
 
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)
@@ -138,8 +131,3 @@ final class World(scene: Scene):
         if t < bestT then (i, t) else (best, bestT)
       }
       ._1
-
-/** What [[World]] shares between its instances. */
-private object World:
-  /** True when some surface of `o` (a CSG leaf's included) lets light through. */
-  def transmitting(o: SceneObject): Boolean = o.surfaces.exists(_.transmit > 0)
