@@ -1,35 +1,20 @@
 package tracer.cli
 
-import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
-import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
 import scala.jdk.CollectionConverters.*
 import tracer.image.{Colour, Exr, Pfm, Raster}
 import tracer.io.SceneXml
 import tracer.render.{CameraConfig, Integrator, Renderer}
+import tracer.testkit.InProcess
 
 /** `.pfm` and `.exr` output from the command (docs/cli.md, Floating-point output): the linear,
   * unclamped picture, `-g` refused with them, bands and `--stack`, a batch's bad frame alone.
   */
-class FloatOutputSuite extends munit.FunSuite:
+class FloatOutputSuite extends munit.FunSuite with InProcess:
 
-  final case class Run(status: Int, out: String, err: String)
+  private val dir = scratch("tracer-float")
 
-  private val dir = FunFixture[Path](
-    _ => Files.createTempDirectory("tracer-float"),
-    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
-  )
-
-  private def run(cwd: Path, scene: String, args: String*): Run =
-    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
-    val status     = Main.run(
-      args,
-      ByteArrayInputStream(scene.getBytes(UTF_8)),
-      PrintStream(out, true),
-      PrintStream(err, true),
-      cwd
-    )
-    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+  private def run(cwd: Path, scene: String, args: String*): Run = inProcess(cwd, scene, args)
 
   // A lit ball and a ball glowing at 3 in red, so the picture holds values above 1.
   private val scene =

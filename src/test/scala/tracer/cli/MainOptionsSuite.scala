@@ -1,34 +1,17 @@
 package tracer.cli
 
-import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
-import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
 import tracer.image.{Bitmap, Encoding}
-import tracer.testkit.Images
+import tracer.testkit.{Images, InProcess}
 
 /** The options beyond the course text, run in-process: `-g`, `-R`, `-i` and `--version`. */
-class MainOptionsSuite extends munit.FunSuite with Images:
+class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
 
-  /** What one run did. */
-  final case class Run(status: Int, out: String, err: String)
-
-  private val dir = FunFixture[Path](
-    _ => Files.createTempDirectory("tracer-options"),
-    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
-  )
+  private val dir = scratch("tracer-options")
 
   private val scenes = Path.of("scenes").toAbsolutePath
 
-  private def run(cwd: Path, args: String*)(scene: String = ""): Run =
-    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
-    val status     = Main.run(
-      args,
-      ByteArrayInputStream(scene.getBytes(UTF_8)),
-      PrintStream(out, true),
-      PrintStream(err, true),
-      cwd
-    )
-    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+  private def run(cwd: Path, args: String*)(scene: String = ""): Run = inProcess(cwd, scene, args)
 
   private def assertFailed(r: Run, status: Int, expected: String*)(using munit.Location): Unit =
     assertEquals(r.status, status, r.err)

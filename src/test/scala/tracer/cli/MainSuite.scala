@@ -1,33 +1,17 @@
 package tracer.cli
 
-import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
 import scala.jdk.CollectionConverters.*
 import tracer.image.{Bitmap, Colour, Ppm}
-import tracer.testkit.Images
+import tracer.testkit.{Images, InProcess}
 
 /** The `tracer` command run in-process: outputs, the sample pictures, and every kind of bad input. */
-class MainSuite extends munit.FunSuite with Images:
+class MainSuite extends munit.FunSuite with Images with InProcess:
 
-  /** What one run did. */
-  final case class Run(status: Int, out: String, err: String)
+  private val dir = scratch("tracer-main")
 
-  private val dir = FunFixture[Path](
-    _ => Files.createTempDirectory("tracer-main"),
-    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
-  )
-
-  private def run(cwd: Path, scene: String, args: String*): Run =
-    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
-    val status     = Main.run(
-      args,
-      ByteArrayInputStream(scene.getBytes(UTF_8)),
-      PrintStream(out, true),
-      PrintStream(err, true),
-      cwd
-    )
-    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+  private def run(cwd: Path, scene: String, args: String*): Run = inProcess(cwd, scene, args)
 
   private def resource(name: String): String =
     String(getClass.getResourceAsStream(name).readAllBytes(), UTF_8)

@@ -1,20 +1,14 @@
 package tracer.cli
 
-import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
-import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
+import tracer.testkit.InProcess
 
 /** Path mode's options through the real command, in-process: `-m`, `-s`, `--seed`, `--sampler`
   * and their rules (docs/cli.md).
   */
-class PathOptionsSuite extends munit.FunSuite:
+class PathOptionsSuite extends munit.FunSuite with InProcess:
 
-  private final case class Run(status: Int, out: String, err: String)
-
-  private val dir = FunFixture[Path](
-    _ => Files.createTempDirectory("tracer-path-options"),
-    d => Files.walk(d).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
-  )
+  private val dir = scratch("tracer-path-options")
 
   private val scene =
     """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
@@ -23,16 +17,7 @@ class PathOptionsSuite extends munit.FunSuite:
       |<sphere radius="1"><centre x="0" y="0" z="0"/><surface phong="0.5"><colour r="1" g="0.5" b="0"/></surface></sphere>
       |</scene>""".stripMargin
 
-  private def run(cwd: Path, args: String*): Run =
-    val (out, err) = (ByteArrayOutputStream(), ByteArrayOutputStream())
-    val status     = Main.run(
-      args,
-      ByteArrayInputStream(scene.getBytes(UTF_8)),
-      PrintStream(out, true),
-      PrintStream(err, true),
-      cwd
-    )
-    Run(status, out.toString(UTF_8), err.toString(UTF_8))
+  private def run(cwd: Path, args: String*): Run = inProcess(cwd, scene, args)
 
   private val refused = List(
     List("-m", "path", "-a", "2")              -> "-a",
