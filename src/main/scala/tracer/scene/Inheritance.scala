@@ -16,7 +16,8 @@ object Inheritance:
   /** The surface that combination `c`, whose first leaf is number `leaf` of `o`'s shape, should
     * carry inside elements placed by `placements` (its own first, innermost first): a checker
     * lying in its space on a leaf placed apart (it can sit nowhere else), else the surface its
-    * leaves show most that may sit there (the first of equals).
+    * leaves show most that may sit there (the first of equals); nothing when a leaf inherits a
+    * checker lying in the space of an element further out.
     */
   def carried(o: SceneObject, c: Csg, leaf: Int, placements: List[Placement]): Option[Surface] =
     val here    = space(placements)
@@ -25,7 +26,13 @@ object Inheritance:
       case (surface, own) if lies(surface, here) && own != here && checker(surface) => surface
     }
     val fitting = shown.filter(lies(_, here))
-    pattern.orElse(fitting.distinct.maxByOption(s => fitting.count(_ == s)))
+    // A leaf showing a checker that lies neither here nor in its own space inherits it from an
+    // element outside: this combination must carry nothing, or it would come between them.
+    val fromOutside = shown.zip(leafSpaces(c, placements)).exists { (surface, own) =>
+      checker(surface) && !lies(surface, here) && !lies(surface, own)
+    }
+    if fromOutside then None
+    else pattern.orElse(fitting.distinct.maxByOption(s => fitting.count(_ == s)))
 
   /** How many of `chain` (placements innermost first, inside elements placed by `enclosing`) come
     * before `surface` is given, so that its pattern moves with the rest: 0 unless it is a checker

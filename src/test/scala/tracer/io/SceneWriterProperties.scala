@@ -298,3 +298,26 @@ class SceneWriterProperties extends ScalaCheckSuite:
           )
         case Left(e) => fail(s"${e.describe}\n$text")
     }
+
+  test("a leaf inheriting a checker from outside a combination whose other leaves differ"):
+    // Found by the round trip above: a difference whose placed intersection holds a cone that
+    // inherits the top's checker (space: none) and a box of its own colour. Were the intersection
+    // to carry a surface, the cone could not inherit the checker past it, and written on the
+    // cone the checker would move into the cone's space.
+    val p       = Placement(2, Vec3(0, 30, 0), Vec3(1, 0, 0))
+    val checker = Surface(pigment = Pigment.Checker(Colour.White, Colour.Black, 0.5))
+    val red     = Surface(pigment = Pigment.Solid(Colour(1, 0, 0)))
+    val inner   = Csg(
+      CsgOperation.Intersection,
+      Vector(Placed(Cone(Vec3.Zero, 1, Vec3.UnitY, 0.5), p), Box(Vec3(-1, -1, -1), Vec3(1, 1, 1)))
+    )
+    val shape = Csg(
+      CsgOperation.Difference,
+      Vector(Box(Vec3(-2, -2, -2), Vec3(2, 2, 2)), Placed(inner, p))
+    )
+    val scene = Scene(
+      Camera(Vec3(0, 0, -5), Vec3.Zero),
+      objects = List(SceneObject(shape, checker, Vector(checker, checker, red)))
+    )
+    val text = SceneWriter.write(scene).fold(fail(_), identity)
+    assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
