@@ -87,7 +87,10 @@ object Kernel:
     ThreadLocal.withInitial(() => CrossingBuffer())
 
   /** [[Shape.distance]] of `shape` along the ray from (ox, oy, oz) in unit direction
-    * (dx, dy, dz), bit for bit: the nearest t > 0, or +∞.
+    * (dx, dy, dz), bit for bit, when that distance is at most `cutoff`: the nearest t > 0, or +∞.
+    * A shape farther than `cutoff` may be reported at any distance beyond it (+∞ or its own), so
+    * a caller that keeps only hits up to the cutoff (the hierarchy's best so far, a shadow ray's
+    * reach) gets the reference's answer (Perf: a combination stops at its first crossing).
     */
   def distance(
       shape: Shape,
@@ -97,41 +100,65 @@ object Kernel:
       dx: Double,
       dy: Double,
       dz: Double,
-      buffer: CrossingBuffer
+      buffer: CrossingBuffer,
+      cutoff: Double = Double.PositiveInfinity
   ): Double = shape match
     case s: Sphere                                   => sphereDistance(s, ox, oy, oz, dx, dy, dz)
     case p: Plane                                    => planeDistance(p, ox, oy, oz, dx, dy, dz)
     case t: Triangle                                 => triangleDistance(t, ox, oy, oz, dx, dy, dz)
     case c: Csg if c.operation == CsgOperation.Union =>
-      // Perf: the reference's foldLeft of `min`, as a loop.
+      // Perf: the reference's foldLeft of `min`, as a loop; a child whose box the ray misses, or
+      // enters beyond the best so far, cannot lower it (SolidsBench).
+      val ix   = 1 / dx
+      val iy   = 1 / dy
+      val iz   = 1 / dz
       var best = Double.PositiveInfinity
       var i    = 0
       while i < c.parts.length do
-        best = Math.min(best, distance(c.parts(i), ox, oy, oz, dx, dy, dz, buffer))
+        val limit = Math.min(best, cutoff)
+        if boxEntry(c.partBoxes, 6 * i, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity
+        then best = Math.min(best, distance(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, limit))
         i += 1
       best
     case p: Placed =>
-      val m  = p.back
-      val lx = m(0) * dx + m(1) * dy + m(2) * dz
-      val ly = m(3) * dx + m(4) * dy + m(5) * dz
-      val lz = m(6) * dx + m(7) * dy + m(8) * dz
-      val s  = Math.sqrt(lx * lx + ly * ly + lz * lz)
-      val qx = ox - m(9)
-      val qy = oy - m(10)
-      val qz = oz - m(11)
-      distance(
-        p.shape,
-        m(0) * qx + m(1) * qy + m(2) * qz,
-        m(3) * qx + m(4) * qy + m(5) * qz,
-        m(6) * qx + m(7) * qy + m(8) * qz,
-        lx / s,
-        ly / s,
-        lz / s,
-        buffer
-      ) / s
-    case other: (Box | Cone | Torus | Csg) =>
+      ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
+        distance(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, within(cutoff, s)) / s
+      }
+    case c: Cone => coneDistance(c, ox, oy, oz, dx, dy, dz)
+    case c: Csg  =>
+      if first(c, ox, oy, oz, dx, dy, dz, buffer, 0, cutoff, normals = false) > 0 then buffer.t(0)
+      else Double.PositiveInfinity
+    case other: (Box | Torus) =>
       if collect(other, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false) > 0 then buffer.t(0)
       else Double.PositiveInfinity
+
+  /** The first of [[Shape.crossings]] of `shape` (the one [[Shape.hitAt]] reports: its t, outward
+    * normal and leaf, bit for bit) written into `buffer` at `from`; returns `from + 1`, or `from`
+    * when the ray crosses nothing. Crossing `from + 1` on may be overwritten.
+    *
+    * Perf: a combination's children are scanned for their first crossing on the whole's surface,
+    * not collected and sorted whole (SolidsBench).
+    */
+  def firstCrossing(
+      shape: Shape,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      buffer: CrossingBuffer,
+      from: Int
+  ): Int = shape match
+    case c: Csg =>
+      first(c, ox, oy, oz, dx, dy, dz, buffer, from, Double.PositiveInfinity, normals = true)
+    case p: Placed =>
+      ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
+        val end = firstCrossing(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from)
+        broughtBack(p.back, s, buffer, from, end, normals = true)
+      }
+    case other: (Sphere | Plane | Triangle | Box | Cone | Torus) =>
+      if collect(other, ox, oy, oz, dx, dy, dz, buffer, from) > from then from + 1 else from
 
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
     * returns the index after the last. The same crossings bit for bit as the reference's list;
@@ -175,42 +202,74 @@ object Kernel:
     case c: Cone   => cone(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case t: Torus  => torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case p: Placed =>
-      val m   = p.back
-      val lx  = m(0) * dx + m(1) * dy + m(2) * dz
-      val ly  = m(3) * dx + m(4) * dy + m(5) * dz
-      val lz  = m(6) * dx + m(7) * dy + m(8) * dz
-      val s   = Math.sqrt(lx * lx + ly * ly + lz * lz)
-      val qx  = ox - m(9)
-      val qy  = oy - m(10)
-      val qz  = oz - m(11)
-      val end = collect(
-        p.shape,
-        m(0) * qx + m(1) * qy + m(2) * qz,
-        m(3) * qx + m(4) * qy + m(5) * qz,
-        m(6) * qx + m(7) * qy + m(8) * qz,
-        lx / s,
-        ly / s,
-        lz / s,
-        buffer,
-        from,
-        normals
-      )
-      // Each crossing brought back: t / stretch, the normal by (M⁻¹)ᵀ, normalised.
-      // Why: a loop over the crossings just written, in place.
-      var k = from
-      while k < end do
-        buffer.t(k) = buffer.t(k) / s
-        if normals then
-          val nx = buffer.nx(k); val ny = buffer.ny(k); val nz = buffer.nz(k)
-          val wx = m(0) * nx + m(3) * ny + m(6) * nz
-          val wy = m(1) * nx + m(4) * ny + m(7) * nz
-          val wz = m(2) * nx + m(5) * ny + m(8) * nz
-          val l  = Math.sqrt(wx * wx + wy * wy + wz * wz)
-          if l > 0 && l < Double.PositiveInfinity then
-            buffer.nx(k) = wx / l; buffer.ny(k) = wy / l; buffer.nz(k) = wz / l
-        k += 1
-      end
+      ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
+        val end = collect(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from, normals)
+        broughtBack(p.back, s, buffer, from, end, normals)
+      }
     case c: Csg => combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
+
+  /** Runs `body` on the ray taken into `p`'s own space (Shape.ownSpace on doubles): its origin,
+    * its unit direction and the stretch s by which its distances are longer there.
+    *
+    * Perf: `inline` with an inline body, so no tuple or ray is made (as Bvh.walk).
+    */
+  private inline def ownSpace[A](
+      p: Placed,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  )(inline body: (Double, Double, Double, Double, Double, Double, Double) => A): A =
+    val m  = p.back
+    val lx = m(0) * dx + m(1) * dy + m(2) * dz
+    val ly = m(3) * dx + m(4) * dy + m(5) * dz
+    val lz = m(6) * dx + m(7) * dy + m(8) * dz
+    val s  = Math.sqrt(lx * lx + ly * ly + lz * lz)
+    val qx = ox - m(9)
+    val qy = oy - m(10)
+    val qz = oz - m(11)
+    body(
+      m(0) * qx + m(1) * qy + m(2) * qz,
+      m(3) * qx + m(4) * qy + m(5) * qz,
+      m(6) * qx + m(7) * qy + m(8) * qz,
+      lx / s,
+      ly / s,
+      lz / s,
+      s
+    )
+
+  /** A cutoff in the world taken into a placement's own space, where distances are `s` times
+    * longer, widened so that every crossing within the world's cutoff is within it.
+    */
+  private inline def within(cutoff: Double, s: Double): Double = cutoff * s * (1 + 1e-9)
+
+  /** The crossings `from until end`, found in a placement's own space, brought back: t divided by
+    * the stretch `s`, the normal by (M⁻¹)ᵀ, normalised. Returns `end`.
+    */
+  private def broughtBack(
+      m: Array[Double],
+      s: Double,
+      buffer: CrossingBuffer,
+      from: Int,
+      end: Int,
+      normals: Boolean
+  ): Int =
+    // Why: a loop over the crossings just written, in place.
+    var k = from
+    while k < end do
+      buffer.t(k) = buffer.t(k) / s
+      if normals then
+        val nx = buffer.nx(k); val ny = buffer.ny(k); val nz = buffer.nz(k)
+        val wx = m(0) * nx + m(3) * ny + m(6) * nz
+        val wy = m(1) * nx + m(4) * ny + m(7) * nz
+        val wz = m(2) * nx + m(5) * ny + m(8) * nz
+        val l  = Math.sqrt(wx * wx + wy * wy + wz * wz)
+        if l > 0 && l < Double.PositiveInfinity then
+          buffer.nx(k) = wx / l; buffer.ny(k) = wy / l; buffer.nz(k) = wz / l
+      k += 1
+    end
 
   /** [[Shape.inside]] on the point (px, py, pz), with the reference's tolerances. */
   def inside(shape: Shape, px: Double, py: Double, pz: Double): Boolean = shape match
@@ -390,6 +449,58 @@ object Kernel:
       from: Int,
       normals: Boolean
   ): Int =
+    coneRoots(c, ox, oy, oz, dx, dy, dz) { (roots, r1, r2, wa, da, wx, wy, wz) =>
+      // Why: the crossings written so far.
+      var end = from
+      if roots >= 1 then end = coneSide(c, r1, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
+      if roots == 2 then end = coneSide(c, r2, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
+      if !c.open && da != 0 then
+        end = coneDisc(0.0, c.baseRadius, -1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
+        end = coneDisc(c.height, c.capRadius, 1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
+      buffer.sort(from, end)
+      end
+    }
+
+  /** The first of [[cone]]'s crossings' ts, or +∞: the least t of the side's roots on the frustum
+    * and the discs met (Perf: no buffer, no sort, for a distance; SolidsBench).
+    */
+  private def coneDistance(
+      c: Cone,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    coneRoots(c, ox, oy, oz, dx, dy, dz) { (roots, r1, r2, wa, da, wx, wy, wz) =>
+      // Why: the least t so far; the roots come in increasing order, so the first on the side wins.
+      var best = Double.PositiveInfinity
+      if roots >= 1 && onSide(c, r1, wa, da) then best = r1
+      else if roots == 2 && onSide(c, r2, wa, da) then best = r2
+      if !c.open && da != 0 then
+        val base = discT(0.0, c.baseRadius, c, wa, da, wx, wy, wz, dx, dy, dz)
+        if base < best then best = base
+        val cap = discT(c.height, c.capRadius, c, wa, da, wx, wy, wz, dx, dy, dz)
+        if cap < best then best = cap
+      best
+    }
+
+  /** Runs `body` on the real roots of the cone's quadratic (their number, 0 to 2, and the roots in
+    * increasing order) with the ray's origin w from the base and its heights along the axis: wa
+    * of the origin, da of the direction.
+    *
+    * Perf: `inline` with an inline body: the values stay local doubles (as Bvh.walk).
+    */
+  private inline def coneRoots[A](
+      c: Cone,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  )(inline body: (Int, Double, Double, Double, Double, Double, Double, Double) => A): A =
     val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
     val wx  = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
     val wa  = wx * ax + wy * ay + wz * az
@@ -423,14 +534,12 @@ object Kernel:
           r1 = x1; r2 = x2
         else
           r1 = x2; r2 = x1
-    var end = from
-    if roots >= 1 then end = coneSide(c, r1, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
-    if roots == 2 then end = coneSide(c, r2, wa, da, wx, wy, wz, dx, dy, dz, buffer, end, normals)
-    if !c.open && da != 0 then
-      end = coneDisc(0.0, c.baseRadius, -1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
-      end = coneDisc(c.height, c.capRadius, 1.0, c, wa, da, wx, wy, wz, dx, dy, dz, buffer, end)
-    buffer.sort(from, end)
-    end
+    body(roots, r1, r2, wa, da, wx, wy, wz)
+
+  /** A root t of the cone's quadratic lies on the frustum, at t > 0. */
+  private inline def onSide(c: Cone, t: Double, wa: Double, da: Double): Boolean =
+    val z = wa + t * da
+    t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0
 
   /** A root of the cone's quadratic as a crossing of its side, if it lies on the frustum. */
   private def coneSide(
@@ -448,11 +557,11 @@ object Kernel:
       k: Int,
       normals: Boolean
   ): Int =
-    val z = wa + t * da
-    if t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0 && !normals then
+    if !onSide(c, t, wa, da) then k
+    else if !normals then
       buffer.put(k, t, 0, 0, 0, 0)
       k + 1
-    else if t > 0 && z >= 0 && z <= c.height && c.baseRadius + c.slope * z >= 0 then
+    else
       val ax = c.axis.x; val ay     = c.axis.y; val az     = c.axis.z
       val px = wx + dx * t; val py  = wy + dy * t; val pz  = wz + dz * t
       val pa = px * ax + py * ay + pz * az
@@ -463,7 +572,6 @@ object Kernel:
       if l > 0 && l < Double.PositiveInfinity then buffer.put(k, t, nx / l, ny / l, nz / l, 0)
       else buffer.put(k, t, ax, ay, az, 0)
       k + 1
-    else k
 
   /** A cone's disc at height `z` along the axis as a crossing, if the ray meets it inside. */
   private def coneDisc(
@@ -482,14 +590,35 @@ object Kernel:
       buffer: CrossingBuffer,
       k: Int
   ): Int =
+    val t = discT(z, radius, c, wa, da, wx, wy, wz, dx, dy, dz)
+    if t == Double.PositiveInfinity then k
+    else
+      // The reference's -axis for the base (negative zeros included), axis for the cap.
+      val a = c.axis
+      if side < 0 then buffer.put(k, t, -a.x, -a.y, -a.z, 0) else buffer.put(k, t, a.x, a.y, a.z, 0)
+      k + 1
+
+  /** Where the ray meets a cone's disc at height `z` along the axis inside its radius, at t > 0,
+    * or +∞.
+    */
+  private inline def discT(
+      z: Double,
+      radius: Double,
+      c: Cone,
+      wa: Double,
+      da: Double,
+      wx: Double,
+      wy: Double,
+      wz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
     val ax = c.axis.x; val ay             = c.axis.y; val az             = c.axis.z
     val t  = (z - wa) / da
     val px = wx + dx * t - ax * z; val py = wy + dy * t - ay * z; val pz = wz + dz * t - az * z
-    if t > 0 && radius > 0 && px * px + py * py + pz * pz <= radius * radius then
-      // The reference's -axis for the base (negative zeros included), axis for the cap.
-      if side < 0 then buffer.put(k, t, -ax, -ay, -az, 0) else buffer.put(k, t, ax, ay, az, 0)
-      k + 1
-    else k
+    if t > 0 && radius > 0 && px * px + py * py + pz * pz <= radius * radius then t
+    else Double.PositiveInfinity
 
   /** Solids.torusCrossings: the quartic's roots on the part of the ray inside the bounding
     * sphere, from a point moved up to it, found by [[Polynomial.rootsInto]].
@@ -556,7 +685,8 @@ object Kernel:
 
   /** Combination.crossings: each child's crossings kept where the others' inside tests say the
     * point is on the whole's surface, normals of subtracted children turned round, leaves
-    * renumbered, all sorted by t (stably, children in order).
+    * renumbered, all sorted by t (stably, children in order). A child whose box the ray misses
+    * has no crossings and contains none of the others' ([[reach]]), so it is skipped.
     */
   private def combination(
       c: Csg,
@@ -570,47 +700,224 @@ object Kernel:
       from: Int,
       normals: Boolean
   ): Int =
-    // Perf: the children's crossings are written after the kept ones and compacted in place.
-    var kept = from
-    var i    = 0
-    while i < c.parts.length do
-      val end   = collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, kept, normals)
-      val flip  = c.operation == CsgOperation.Difference && i > 0
-      val first = c.partLeaves(i)
-      var k     = kept
-      while k < end do
-        val t = buffer.t(k)
-        if keeps(c, i, ox + dx * t, oy + dy * t, oz + dz * t) then
-          if k != kept then buffer.move(k, kept)
-          if flip then
-            buffer.nx(kept) = -buffer.nx(kept)
-            buffer.ny(kept) = -buffer.ny(kept)
-            buffer.nz(kept) = -buffer.nz(kept)
-          buffer.leaf(kept) = buffer.leaf(kept) + first
-          kept += 1
-        k += 1
-      i += 1
-    buffer.sort(from, kept)
-    kept
+    val ix   = 1 / dx
+    val iy   = 1 / dy
+    val iz   = 1 / dz
+    val mask = reach(c, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity)
+    if !whole(c, mask) then from
+    else
+      // Perf: the children's crossings are written after the kept ones and compacted in place.
+      var kept = from
+      var i    = 0
+      while i < c.parts.length do
+        if met(c, mask, i, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity) then
+          val end   = collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, kept, normals)
+          val flip  = c.operation == CsgOperation.Difference && i > 0
+          val first = c.partLeaves(i)
+          var k     = kept
+          while k < end do
+            val t = buffer.t(k)
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t) then
+              if k != kept then buffer.move(k, kept)
+              if flip then
+                buffer.nx(kept) = -buffer.nx(kept)
+                buffer.ny(kept) = -buffer.ny(kept)
+                buffer.nz(kept) = -buffer.nz(kept)
+              buffer.leaf(kept) = buffer.leaf(kept) + first
+              kept += 1
+            k += 1
+        i += 1
+      buffer.sort(from, kept)
+      kept
 
-  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole. */
-  private def keeps(c: Csg, i: Int, px: Double, py: Double, pz: Double): Boolean =
+  /** The first of [[combination]]'s crossings at t ≤ `limit`, written at `from` (returns
+    * `from + 1`), or none (returns `from`): each child's crossings in increasing t up to its first
+    * kept one or the best so far, so later crossings need no inside tests and nothing is sorted.
+    * Of equal ts the first child's wins, as in the stable sort.
+    */
+  private def first(
+      c: Csg,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      buffer: CrossingBuffer,
+      from: Int,
+      limit: Double,
+      normals: Boolean
+  ): Int =
+    val ix   = 1 / dx
+    val iy   = 1 / dy
+    val iz   = 1 / dz
+    val mask = reach(c, ox, oy, oz, ix, iy, iz, limit)
+    if !whole(c, mask) then from
+    else
+      // Perf: the best crossing so far at `from`, each child's crossings after it (SolidsBench).
+      var best = Double.PositiveInfinity
+      var i    = 0
+      while i < c.parts.length do
+        // A child entered beyond the best so far cannot hold a nearer crossing (until one is
+        // found, the mask, made with the limit, says all there is).
+        val bound = if best < limit then best else Double.PositiveInfinity
+        if met(c, mask, i, ox, oy, oz, ix, iy, iz, bound) then
+          val end = collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, from + 1, normals)
+          var k   = from + 1
+          while k < end && buffer.t(k) < best && buffer.t(k) <= limit do
+            val t = buffer.t(k)
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t) then
+              best = t
+              buffer.move(k, from)
+              if c.operation == CsgOperation.Difference && i > 0 then
+                buffer.nx(from) = -buffer.nx(from)
+                buffer.ny(from) = -buffer.ny(from)
+                buffer.nz(from) = -buffer.nz(from)
+              buffer.leaf(from) = buffer.leaf(from) + c.partLeaves(i)
+              k = end
+            else k += 1
+        i += 1
+      if best < Double.PositiveInfinity then from + 1 else from
+
+  /** Which children's boxes the ray (origin o, inverse direction i) meets at 0 ≤ t ≤ `limit`: bit
+    * j set for child j (children from 64 on: always set, tested by [[met]] instead). A child
+    * whose box the ray misses has no crossing there, and no point of the ray there is inside it:
+    * the boxes are the children's bounds widened by far more than the rounding of a crossing's
+    * point or an inside test's tolerance ([[paddedBoxes]]).
+    */
+  private def reach(
+      c: Csg,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      limit: Double
+  ): Long =
+    // Perf: one box test a child a ray, a bit each, no array (SolidsBench).
+    var mask = -1L
+    var j    = 0
+    val n    = Math.min(64, c.parts.length)
+    while j < n do
+      if boxEntry(c.partBoxes, 6 * j, ox, oy, oz, ix, iy, iz, limit) == Double.PositiveInfinity
+      then mask &= ~(1L << j)
+      j += 1
+    mask
+
+  /** True when the ray may cross the whole: every child of an intersection met, the first child
+    * of a difference met (a union: always).
+    */
+  private inline def whole(c: Csg, mask: Long): Boolean = c.operation match
+    case CsgOperation.Union        => true
+    case CsgOperation.Intersection => mask == -1L
+    case CsgOperation.Difference   => (mask & 1L) != 0
+
+  /** Child `i` may have crossings at t ≤ `limit`: its bit of `mask` (from [[reach]] with a limit
+    * at least this one), and its box entered by then when the limit is lower or `i` ≥ 64.
+    */
+  private inline def met(
+      c: Csg,
+      mask: Long,
+      i: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      limit: Double
+  ): Boolean =
+    (i >= 64 || (mask & (1L << i)) != 0) &&
+      (i < 64 && limit == Double.PositiveInfinity ||
+        boxEntry(c.partBoxes, 6 * i, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity)
+
+  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole; a child
+    * whose bit in `mask` is clear does not contain p.
+    */
+  private def keeps(c: Csg, i: Int, mask: Long, px: Double, py: Double, pz: Double): Boolean =
     // Perf: `forall` over the children as loops on their array (SolidsBench).
     c.operation match
       case CsgOperation.Union        => true
       case CsgOperation.Intersection =>
+        // A clear bit makes the whole a miss ([[whole]]), so every child is tested here.
         var j = 0
         while j < c.parts.length && (j == i || inside(c.parts(j), px, py, pz)) do j += 1
         j == c.parts.length
       case CsgOperation.Difference =>
         // Inside the first child and outside every later one, child i aside.
-        var j = 0
-        while j < c.parts.length && (j == i || allows(c, j, px, py, pz)) do j += 1
-        j == c.parts.length
+        (i == 0 || inside(c.parts(0), px, py, pz)) && {
+          var j = 1
+          while j < c.parts.length &&
+            (j == i || j < 64 && (mask & (1L << j)) == 0 || !inside(c.parts(j), px, py, pz))
+          do j += 1
+          j == c.parts.length
+        }
 
-  /** In a difference, child `j` allows a point of the whole: inside it for the first, else outside. */
-  private def allows(c: Csg, j: Int, px: Double, py: Double, pz: Double): Boolean =
-    if j == 0 then inside(c.parts(j), px, py, pz) else !inside(c.parts(j), px, py, pz)
+  /** The distance at which the ray (origin o, inverse direction i) enters the box of six doubles
+    * at `b` of `boxes`, or +∞ when it misses it at 0 ≤ t ≤ `limit` (Bvh.entry's slab test).
+    */
+  private inline def boxEntry(
+      boxes: Array[Double],
+      b: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      limit: Double
+  ): Double =
+    // Perf: local doubles narrowed in place; a NaN (an origin on a plane of a slab it runs
+    // along) narrows nothing, so such a ray counts as inside that slab.
+    var tmin = 0.0
+    var tmax = limit
+    val ax   = (boxes(b) - ox) * ix
+    val bx   = (boxes(b + 3) - ox) * ix
+    if ix >= 0 then
+      if ax > tmin then tmin = ax
+      if bx < tmax then tmax = bx
+    else
+      if bx > tmin then tmin = bx
+      if ax < tmax then tmax = ax
+    val ay = (boxes(b + 1) - oy) * iy
+    val by = (boxes(b + 4) - oy) * iy
+    if iy >= 0 then
+      if ay > tmin then tmin = ay
+      if by < tmax then tmax = by
+    else
+      if by > tmin then tmin = by
+      if ay < tmax then tmax = ay
+    val az = (boxes(b + 2) - oz) * iz
+    val bz = (boxes(b + 5) - oz) * iz
+    if iz >= 0 then
+      if az > tmin then tmin = az
+      if bz < tmax then tmax = bz
+    else
+      if bz > tmin then tmin = bz
+      if az < tmax then tmax = az
+    if tmin <= tmax then tmin else Double.PositiveInfinity
+
+  /** The children's boxes for [[Csg.partBoxes]]: [[Shape.bounds]] widened on every side by 10⁻⁷
+    * of its largest coordinate and extent, or ±∞ for an unbounded child.
+    */
+  private[geometry] def paddedBoxes(parts: Array[Shape]): Array[Double] =
+    val out = new Array[Double](6 * parts.length)
+    parts.indices.foreach { i =>
+      Shape.bounds(parts(i)) match
+        case Some(b) =>
+          val coords = Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z)
+          val extent = Seq(b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z).map(Math.abs).max
+          val pad    = 1e-7 * (coords.map(Math.abs).max + extent) + Double.MinPositiveValue
+          out(6 * i) = b.lo.x - pad; out(6 * i + 1) = b.lo.y - pad; out(6 * i + 2) = b.lo.z - pad
+          out(6 * i + 3) = b.hi.x + pad; out(6 * i + 4) = b.hi.y + pad
+          out(6 * i + 5) = b.hi.z + pad
+        case None =>
+          out(6 * i) = Double.NegativeInfinity; out(6 * i + 1) = Double.NegativeInfinity
+          out(6 * i + 2) = Double.NegativeInfinity; out(6 * i + 3) = Double.PositiveInfinity
+          out(6 * i + 4) = Double.PositiveInfinity; out(6 * i + 5) = Double.PositiveInfinity
+    }
+    out
 
   /** Shape.sphereDistance on doubles. */
   private def sphereDistance(

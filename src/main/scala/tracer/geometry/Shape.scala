@@ -241,6 +241,11 @@ final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends S
   private[geometry] val parts: Array[Shape]    = children.toArray
   private[geometry] val partLeaves: Array[Int] = firstLeaves.toArray
 
+  /** Each child's bounds, widened a little, six doubles a child (low corner, high corner; ±∞ for
+    * an unbounded child): the kernel skips a child whose box a ray misses (Kernel.reach).
+    */
+  private[geometry] val partBoxes: Array[Double] = Kernel.paddedBoxes(parts)
+
 /** The total functions on shapes: intersection distance, hit details and texture coordinates. */
 object Shape:
 
@@ -281,12 +286,12 @@ object Shape:
       case tr: Triangle                               => facingHit(t, point, tr.normal, 0, ray)
       case other: (Box | Cone | Torus | Placed | Csg) =>
         // The general path: the nearest crossing again, for its normal and leaf: the first of
-        // `crossings`, here from the kernel on this thread's buffer, which gives the same
-        // crossings without a list (Kernel; docs/performance.md, round 5).
+        // `crossings`, here from the kernel on this thread's buffer, which finds it without a
+        // list or the crossings behind it (Kernel.firstCrossing; docs/performance.md, round 5).
         val buffer = Kernel.scratch.get()
         val o      = ray.origin
         val d      = ray.direction
-        if Kernel.collect(other, o.x, o.y, o.z, d.x, d.y, d.z, buffer, 0) > 0 then
+        if Kernel.firstCrossing(other, o.x, o.y, o.z, d.x, d.y, d.z, buffer, 0) > 0 then
           val first = buffer.t(0)
           val n     = Vec3(buffer.nx(0), buffer.ny(0), buffer.nz(0))
           facingHit(first, ray.at(first), n, buffer.leaf(0), ray)

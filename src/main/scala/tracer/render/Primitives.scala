@@ -102,8 +102,9 @@ object Primitives:
 
   /** The distance along the ray (origin o, unit direction d) to primitive `k`, or +∞ on a miss:
     * bit for bit what [[tracer.geometry.Shape.distance]] gives for its shape, the same operations
-    * in the same order on the same values. A triangle farther than `cutoff` may be reported as a
-    * miss without finishing its test. The general route takes its scratch from `buffer`.
+    * in the same order on the same values. A triangle or a general shape farther than `cutoff`
+    * may be reported as a miss without finishing its test. The general route takes its scratch
+    * from `buffer`.
     */
   inline def distance(
       p: Primitives,
@@ -121,13 +122,15 @@ object Primitives:
     if kd == TriangleKind then triangle(p.data, Stride * k, cutoff, ox, oy, oz, dx, dy, dz)
     else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
     else if kd == PlaneKind then plane(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
-    else general(p.all(p.index(k)), ox, oy, oz, dx, dy, dz, buffer)
+    else general(p.all(p.index(k)), cutoff, ox, oy, oz, dx, dy, dz, buffer)
 
   /** The general route: [[tracer.geometry.Shape.distance]], bit for bit, from the solids' kernel
-    * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test.
+    * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test; a shape
+    * farther than `cutoff` may be reported as a miss.
     */
   private def general(
       shape: Shape,
+      cutoff: Double,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -135,7 +138,7 @@ object Primitives:
       dy: Double,
       dz: Double,
       buffer: CrossingBuffer
-  ): Double = Kernel.distance(shape, ox, oy, oz, dx, dy, dz, buffer)
+  ): Double = Kernel.distance(shape, ox, oy, oz, dx, dy, dz, buffer, cutoff)
 
   /** Shape.planeDistance on flat data: equations 24–27. */
   private inline def plane(

@@ -124,6 +124,36 @@ class KernelProperties extends ScalaCheckSuite:
       }
     }
 
+  property("distance within a cutoff is Shape.distance there, and beyond it when farther"):
+    forAll(shape, Gen.listOfN(20, ray), Gen.choose(0.0, 12.0)) { (s, rays, cutoff) =>
+      val b = CrossingBuffer()
+      rays.foreach { r =>
+        val o    = r.origin
+        val d    = r.direction
+        val want = Shape.distance(s, r)
+        // The reference's own distance as the cutoff too: a tie must still be found.
+        List(cutoff, want).foreach { c =>
+          val got = Kernel.distance(s, o.x, o.y, o.z, d.x, d.y, d.z, b, c)
+          if want <= c then assertEquals(bits(got), bits(want), s"$s $r cutoff $c")
+          else assert(got > c, s"$s $r cutoff $c: $got, the reference $want")
+        }
+      }
+    }
+
+  property("firstCrossing is the first of Shape.crossings: t, normal and leaf, bit for bit"):
+    forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
+      rays.foreach { r =>
+        val b   = CrossingBuffer()
+        val o   = r.origin
+        val d   = r.direction
+        val end = Kernel.firstCrossing(s, o.x, o.y, o.z, d.x, d.y, d.z, b, 2)
+        val got = (2 until end).toList.map(k =>
+          (bits(b.t(k)), bits(b.nx(k)), bits(b.ny(k)), bits(b.nz(k)), b.leaf(k))
+        )
+        assertEquals(got, reference(s, r).take(1), s"$s $r")
+      }
+    }
+
   property("inside is Shape.inside"):
     forAll(shape, Gen.listOfN(20, Gen.oneOf(point, gridPoint))) { (s, ps) =>
       ps.foreach(p => assertEquals(Kernel.inside(s, p.x, p.y, p.z), Shape.inside(s, p), s"$s $p"))
