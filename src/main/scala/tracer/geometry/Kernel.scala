@@ -660,13 +660,13 @@ object Kernel:
         c(4) = 1.0
         val n = Polynomial.rootsInto(c, 0, 5, 0, stop, Polynomial.ScratchLevel)
         // Why: a loop over the roots just found, written as crossings in order.
-        var end = from
+        var out = from
         var m   = 0
         while m < n do
           val t = c(Polynomial.ScratchLevel + Polynomial.RootsAt + m) + shift
           if t > 0 && !normals then
-            buffer.put(end, t, 0, 0, 0, 0)
-            end += 1
+            buffer.put(out, t, 0, 0, 0, 0)
+            out += 1
           else if t > 0 then
             val qx     = ox + dx * t; val qy = oy + dy * t; val qz = oz + dz * t
             val ring   = Math.sqrt(qx * qx + qz * qz)
@@ -677,11 +677,11 @@ object Kernel:
             val nx     = qx - cx; val ny     = qy - cy; val nz     = qz - cz
             val length = Math.sqrt(nx * nx + ny * ny + nz * nz)
             if length > 0 && length < Double.PositiveInfinity then
-              buffer.put(end, t, nx / length, ny / length, nz / length, 0)
-            else buffer.put(end, t, 0, 1, 0, 0)
-            end += 1
+              buffer.put(out, t, nx / length, ny / length, nz / length, 0)
+            else buffer.put(out, t, 0, 1, 0, 0)
+            out += 1
           m += 1
-        end
+        out
 
   /** True when the segment from p along unit d for 0 ≤ t ≤ `stop` stays more than 1.1 minor
     * radii from the torus's tube circle: above or below the slab |y| ≤ 1.1r, or within it inside
