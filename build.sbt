@@ -52,6 +52,13 @@ lazy val root = project
     }.taskValue,
     assembly / mainClass       := Some("tracer.cli.Main"),
     assembly / assemblyJarName := "tracer.jar",
+    // The jar's Scala lambdas as plain call sites, which the launcher's start-up cache can hold
+    // (project/PlainLambdas.scala; docs/performance.md, round 6).
+    assembly := {
+      val jar = assembly.value
+      PlainLambdas.rewrite(jar, streams.value.log)
+      jar
+    },
     // System tests start the real command; they need their own JVM and the working directory.
     Test / fork          := true,
     Test / baseDirectory := (ThisBuild / baseDirectory).value,

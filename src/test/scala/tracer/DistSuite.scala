@@ -15,6 +15,10 @@ import tracer.testkit.Processes.{Exit, run}
   */
 class DistSuite extends munit.FunSuite:
 
+  // The cache test trains the launcher's start-up cache twice (a new jar makes a new one), each a
+  // render of every training scene: on a busy two-core machine that outlasts munit's 30 seconds.
+  override val munitTimeout = scala.concurrent.duration.Duration(3, "min")
+
   private val home    = Path.of("").toAbsolutePath
   private val version = BuildInfo.version
   private val dist    = home.resolve("target/dist")
