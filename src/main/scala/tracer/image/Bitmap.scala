@@ -93,22 +93,16 @@ object Bitmap:
 
   /** A bitmap built row by row, the rows possibly on other threads, without copying them.
     *
-    * `fill` is given a function that computes row y (pixel (x, y) is `pixel(x, y)`, brought into
-    * range) straight into the bitmap; when `fill` returns it must have called it once for every
-    * row, and each call must have completed (its Future awaited).
+    * `fill` is given a [[PixelWriter]] that stores pixel (x, y) (brought into range) straight into
+    * the bitmap; when `fill` returns it must have stored every pixel, and each row's writes must
+    * have completed (its Future awaited). Each row is written by one thread.
     */
-  def byRows(width: Int, height: Int, maxval: Int = 255)(
-      fill: ((Int, (Int, Int) => Colour) => Unit) => Unit
-  ): Bitmap =
+  def byRows(width: Int, height: Int, maxval: Int = 255)(fill: PixelWriter => Unit): Bitmap =
     val samples = allocate(width, height, maxval)
     // Perf: each row is written once into the final array, by whichever thread computes it; the
     // rows are disjoint, and `fill` returns only after every row is done (Renderer awaits them).
-    fill { (y, pixel) =>
-      var x = 0
-      while x < width do
-        store(samples, 3 * (y * width + x), pixel(x, y), maxval)
-        x += 1
-    }
+    // The pixel comes as three doubles: no Colour a pixel (RenderBench).
+    fill((x, y, r, g, b) => storeRgb(samples, 3 * (y * width + x), r, g, b, maxval))
     new Bitmap(width, height, maxval, samples)
 
   /** A bitmap of one colour. */
@@ -153,7 +147,19 @@ object Bitmap:
     new Array[Char](3 * width * height)
 
   private def store(samples: Array[Char], i: Int, colour: Colour, maxval: Int): Unit =
-    val c = colour.inRange
-    samples(i) = Colour.quantise(c.r, maxval).toChar
-    samples(i + 1) = Colour.quantise(c.g, maxval).toChar
-    samples(i + 2) = Colour.quantise(c.b, maxval).toChar
+    storeRgb(samples, i, colour.r, colour.g, colour.b, maxval)
+
+  /** Stores the colour (r, g, b), brought into range as [[Colour.inRange]] does, at sample `i`. */
+  private def storeRgb(
+      samples: Array[Char],
+      i: Int,
+      r: Double,
+      g: Double,
+      b: Double,
+      maxval: Int
+  ): Unit =
+    Colour.inRangeOf(r, g, b) { (r, g, b) =>
+      samples(i) = Colour.quantise(r, maxval).toChar
+      samples(i + 1) = Colour.quantise(g, maxval).toChar
+      samples(i + 2) = Colour.quantise(b, maxval).toChar
+    }

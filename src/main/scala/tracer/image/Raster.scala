@@ -57,24 +57,22 @@ object Raster:
 
   /** A raster whose pixel (x, y) is `pixel(x, y)`, stored as floats (not brought into range). */
   def tabulate(width: Int, height: Int)(pixel: (Int, Int) => Colour): Raster =
-    byRows(width, height)(row => (0 until height).foreach(y => row(y, pixel)))
+    byRows(width, height)(out =>
+      for y <- 0 until height; x <- 0 until width do out.put(x, y, pixel(x, y))
+    )
 
   /** A raster built row by row, the rows possibly on other threads, without copying them: as
-    * [[Bitmap.byRows]], with `fill`'s function storing row y's pixels as floats.
+    * [[Bitmap.byRows]], with `fill`'s writer storing each pixel as floats.
     */
-  def byRows(width: Int, height: Int)(fill: ((Int, (Int, Int) => Colour) => Unit) => Unit): Raster =
+  def byRows(width: Int, height: Int)(fill: PixelWriter => Unit): Raster =
     val channels = allocate(width, height)
     // Perf: each row is written once into the final array, by whichever thread computes it; the
     // rows are disjoint, and `fill` returns only after every row is done.
-    fill { (y, pixel) =>
-      var x = 0
-      while x < width do
-        val c = pixel(x, y)
-        val i = 3 * (y * width + x)
-        channels(i) = c.r.toFloat
-        channels(i + 1) = c.g.toFloat
-        channels(i + 2) = c.b.toFloat
-        x += 1
+    fill { (x, y, r, g, b) =>
+      val i = 3 * (y * width + x)
+      channels(i) = r.toFloat
+      channels(i + 1) = g.toFloat
+      channels(i + 2) = b.toFloat
     }
     new Raster(width, height, channels)
 

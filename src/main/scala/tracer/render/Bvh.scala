@@ -21,6 +21,9 @@ final class Bvh(shapes: IndexedSeq[Shape]):
   private val wc    = wide.child
   private val wn    = wide.count
 
+  /** The indices, in order, of the shapes left out of the hierarchy for having no bounds. */
+  val unbounded: Array[Int] = tree.unbounded
+
   /** The number of nodes of the 4-wide tree the queries walk, for tests and benchmarks. */
   def wideNodeCount: Int = wide.size
 
@@ -423,3 +426,20 @@ final class Query:
   /** The distance along the ray of the last nearest hit found (+∞ for none). */
   // Why: the second result of `nearest`, written instead of allocating a pair per ray.
   var distance: Double = Double.PositiveInfinity
+
+  // Perf: the hit at `distance`, written by `Hits.record` for shading, as fields of the row
+  // task's scratch rather than a Hit, a Vec3 per value and a Ray a shaded point
+  // (PrimaryRayBench: bytes per primary ray): the point p; the unit normal n facing the side the
+  // ray came from; the normal s that shades it (Shape.shadingNormal: a smooth face's blend, else
+  // n); the leaf of a combination and whether the ray arrived on the outward side (Hit's).
+  private[render] var px: Double     = 0.0
+  private[render] var py: Double     = 0.0
+  private[render] var pz: Double     = 0.0
+  private[render] var nx: Double     = 0.0
+  private[render] var ny: Double     = 0.0
+  private[render] var nz: Double     = 0.0
+  private[render] var sx: Double     = 0.0
+  private[render] var sy: Double     = 0.0
+  private[render] var sz: Double     = 0.0
+  private[render] var leaf: Int      = 0
+  private[render] var front: Boolean = true

@@ -5,13 +5,16 @@ import tracer.geometry.Shape
 /** A built hierarchy of `size` nodes as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
   * high x, y, z), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
   * one follows it) and 0, for a leaf the first of its primitives and their count (≥ 1).
-  * `order` lists the indexed shapes' indices in leaf order.
+  * `order` lists the indexed shapes' indices in leaf order; `unbounded` the indices, in order,
+  * of the shapes left out for having no bounds (planes), which the builder found as it asked
+  * every shape for its bounds (so `World` need not ask again).
   */
 private[render] final class Tree(
     val size: Int,
     val boxes: Array[Double],
     val links: Array[Int],
-    val order: Array[Int]
+    val order: Array[Int],
+    val unbounded: Array[Int]
 )
 
 /** Top-down binned-SAH construction (Wald 2007) of a [[Tree]] over the shapes that have
@@ -31,6 +34,8 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
   private val boxLo  = new Array[Double](3 * shapes.length)
   private val boxHi  = new Array[Double](3 * shapes.length)
   private val centre = new Array[Double](3 * shapes.length)
+  // The shapes without bounds are collected on the same pass: Shape.bounds is asked once a shape.
+  private val without = Array.newBuilder[Int]
   // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
   // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
   private val prims =
@@ -45,7 +50,7 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
           setBox(k, 1, b.lo.y, b.hi.y)
           setBox(k, 2, b.lo.z, b.hi.z)
           k += 1
-        case None => ()
+        case None => without += i
       i += 1
     found.result()
 
@@ -64,7 +69,7 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
   /** Builds the tree. Its arrays may be longer than its nodes (`Tree.size` says how many). */
   def build(): Tree =
     if prims.nonEmpty then split(newNode(), 0, prims.length, 0)
-    Tree(size, boxes, links, prims)
+    Tree(size, boxes, links, prims, without.result())
 
   private def setBox(i: Int, axis: Int, low: Double, high: Double): Unit =
     val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))

@@ -3,7 +3,7 @@ package tracer.render
 import java.util.concurrent.{Executors, ThreadFactory}
 import scala.concurrent.duration.Duration
 import scala.concurrent.{Await, ExecutionContext, Future}
-import tracer.image.{Bitmap, Colour, Raster}
+import tracer.image.{Bitmap, Colour, Encoding, PixelWriter, Raster}
 import tracer.render.path.PathTracer
 import tracer.scene.Scene
 
@@ -52,7 +52,7 @@ object Renderer:
       threads: Int,
       onRow: () => Unit,
       band: Range
-  )(image: (Int, Int) => (Rows => Unit) => A)(row: Frame => RowWriter): A =
+  )(image: (Int, Int) => (PixelWriter => Unit) => A)(row: Frame => RowWriter): A =
     require(threads >= 1, s"threads must be at least 1, got $threads")
     val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
     require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
@@ -72,17 +72,16 @@ object Renderer:
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow(): Unit
 
-  /** What [[Bitmap.byRows]] and [[Raster.byRows]] hand over: store row y from its pixels. */
-  private type Rows = (Int, (Int, Int) => Colour) => Unit
-
-  /** A frame's row writer: row `y` of the picture stored as row `at` through the image's rows. */
-  private type RowWriter = (Int, Int, Rows) => Unit
+  /** A frame's row writer: row `y` of the picture stored as row `at` through the image's
+    * [[PixelWriter]] (from [[Bitmap.byRows]] or [[Raster.byRows]]).
+    */
+  private type RowWriter = (Int, Int, PixelWriter) => Unit
 
   /** Renders `scene` on the calling thread alone. */
   def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
     val frame = Frame(scene, config)
-    Bitmap.byRows(config.columns, config.rows)(write =>
-      (0 until config.rows).foreach(y => frame.row(y, y, write))
+    Bitmap.byRows(config.columns, config.rows)(out =>
+      (0 until config.rows).foreach(y => frame.row(y, y, out))
     )
 
   /** Where a pixel's n × n samples lie along each axis, from its top left corner in pixel units:
@@ -94,11 +93,11 @@ object Renderer:
     * integrator's own precomputation.
     */
   private abstract class Frame:
-    /** Row `y` of the picture, written as row `at` by `write` (from [[Bitmap.byRows]]). */
-    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit
+    /** Row `y` of the picture, written as row `at` through `out` (from [[Bitmap.byRows]]). */
+    def row(at: Int, y: Int, out: PixelWriter): Unit
 
     /** Row `y` as [[row]] writes it, for floating-point output: unclamped means, not encoded. */
-    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit
+    def linearRow(at: Int, y: Int, out: PixelWriter): Unit
 
   private object Frame:
     /** The frame of `config`'s integrator. */
@@ -120,21 +119,48 @@ object Renderer:
   ) extends Frame:
     private val offsets = Renderer.sampleOffsets(n).toArray
 
-    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
-      val shading = Shading(world, mode)
-      write(at, (x, _) => config.encoding.encode(pixel(shading, x, y, inRange = true)))
+    def row(at: Int, y: Int, out: PixelWriter): Unit =
+      val shading  = Shading(world, mode)
+      val encoding = config.encoding
+      // Perf: a counted loop over the row, each pixel handed on as three doubles (RenderBench).
+      var x = 0
+      while x < config.columns do
+        pixel(shading, x, y, inRange = true) { (r, g, b) =>
+          encoding match
+            case Encoding.Linear => out.put(x, at, r, g, b)
+            case _               =>
+              // Encoding.encode(colour): brought into range, then each channel encoded.
+              Colour.inRangeOf(r, g, b)((r, g, b) =>
+                out.put(x, at, encoding.encode(r), encoding.encode(g), encoding.encode(b))
+              )
+        }
+        x += 1
 
-    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+    def linearRow(at: Int, y: Int, out: PixelWriter): Unit =
       val shading = Shading(world, mode)
-      write(at, (x, _) => pixel(shading, x, y, inRange = false))
+      // Perf: as row.
+      var x = 0
+      while x < config.columns do
+        pixel(shading, x, y, inRange = false)((r, g, b) => out.put(x, at, r, g, b))
+        x += 1
 
-    /** Pixel (x, y): the mean of its n × n samples, each brought into range first when `inRange`
-      * (rendering.md: the 8-bit rule), or as they are (floating-point output).
+    /** Pixel (x, y), handed to `k` as three doubles: the mean of its n × n samples, each brought
+      * into range first when `inRange` (rendering.md: the 8-bit rule), or as they are
+      * (floating-point output).
+      *
+      * Perf: inline with an inline function, the samples' channels summed in locals and each
+      * primary ray traced from its six doubles: no Ray or Colour a sample (PrimaryRayBench).
       */
-    private def pixel(shading: Shading, x: Int, y: Int, inRange: Boolean): Colour =
-      if n == 1 then shading.colour(projection.ray(x + 0.5, y + 0.5), config.depth)
+    private inline def pixel(shading: Shading, x: Int, y: Int, inRange: Boolean)(
+        inline k: (Double, Double, Double) => Unit
+    ): Unit =
+      val o = projection.origin
+      if n == 1 then
+        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
+          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+        )
+        k(shading.r, shading.g, shading.b)
       else
-        // Perf: sum the samples' channels in locals rather than collecting n² colours.
         var r = 0.0
         var g = 0.0
         var b = 0.0
@@ -142,27 +168,38 @@ object Renderer:
         while j < n do
           var i = 0
           while i < n do
-            val sample =
-              shading.colour(projection.ray(x + offsets(i), y + offsets(j)), config.depth)
-            val c = if inRange then sample.inRange else sample
-            r += c.r
-            g += c.g
-            b += c.b
+            projection.direction(x + offsets(i), y + offsets(j))((dx, dy, dz) =>
+              shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+            )
+            if inRange then
+              Colour.inRangeOf(shading.r, shading.g, shading.b) { (sr, sg, sb) =>
+                r += sr
+                g += sg
+                b += sb
+              }
+            else
+              r += shading.r
+              g += shading.g
+              b += shading.b
             i += 1
           j += 1
-        Colour(r, g, b) / (n * n)
+        // Colour(r, g, b) / (n * n)
+        val samples = (n * n).toDouble
+        k(r / samples, g / samples, b / samples)
 
   /** The path tracer's frame: a pixel is the mean of its samples, brought into range only as a
     * whole for an 8-bit file (an unbiased estimate is never clamped sample by sample).
     */
   private final class PathFrame(tracer: PathTracer, config: CameraConfig) extends Frame:
-    def row(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+    def row(at: Int, y: Int, out: PixelWriter): Unit =
       val task = tracer.task()
-      write(at, (x, _) => config.encoding.encode(task.pixel(x, y).inRange))
+      (0 until config.columns).foreach(x =>
+        out.put(x, at, config.encoding.encode(task.pixel(x, y).inRange))
+      )
 
-    def linearRow(at: Int, y: Int, write: (Int, (Int, Int) => Colour) => Unit): Unit =
+    def linearRow(at: Int, y: Int, out: PixelWriter): Unit =
       val task = tracer.task()
-      write(at, (x, _) => task.pixel(x, y))
+      (0 until config.columns).foreach(x => out.put(x, at, task.pixel(x, y)))
 
   /** Names the worker threads and lets the JVM exit without waiting for them. */
   private object WorkerThreads extends ThreadFactory:

@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Hit, Ray, Shape}
+import tracer.geometry.{Ray, Shape}
 import tracer.image.Colour
 import tracer.math.Vec3
 import tracer.scene.{Pigment, Surface}
@@ -14,39 +14,134 @@ import tracer.scene.{Pigment, Surface}
 final class Shading(world: World, mode: ShadingMode):
   private val query   = world.newQuery()
   private val shadows = Shadows(world, query)
+  // Perf: the colour of the last `trace`, left in three fields rather than returned as a Colour,
+  // and the colours of a shaded point summed in local doubles (PrimaryRayBench: bytes per
+  // primary ray; RenderBench).
+  private var red   = 0.0
+  private var green = 0.0
+  private var blue  = 0.0
 
   /** The colour seen along `ray`, allowing `depth` more reflections or refractions. */
-  def colour(ray: Ray, depth: Int): Colour = trace(ray, depth, Nil)
+  def colour(ray: Ray, depth: Int): Colour =
+    val o = ray.origin
+    val d = ray.direction
+    trace(o.x, o.y, o.z, d.x, d.y, d.z, depth)
+    Colour(red, green, blue)
 
-  /** The colour seen along `ray` from inside the objects `insides` (innermost first). */
-  private def trace(ray: Ray, depth: Int, insides: List[Int]): Colour =
-    val i = world.nearest(ray, query)
-    if i < 0 then world.background
+  /** [[colour]] of the ray from (ox, oy, oz) in unit direction (dx, dy, dz), left in [[r]], [[g]]
+    * and [[b]] (the renderer's path: no `Ray` or `Colour` is made).
+    */
+  def trace(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int
+  ): Unit =
+    traceFrom(ox, oy, oz, dx, dy, dz, depth, Nil)
+
+  /** The red channel of the last [[trace]]. */
+  def r: Double = red
+
+  /** The green channel of the last [[trace]]. */
+  def g: Double = green
+
+  /** The blue channel of the last [[trace]]. */
+  def b: Double = blue
+
+  /** The colour seen along the ray from o in direction d from inside the objects `insides`
+    * (innermost first), left in red, green and blue.
+    */
+  private def traceFrom(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int,
+      insides: List[Int]
+  ): Unit =
+    val i = world.nearestAlong(ox, oy, oz, dx, dy, dz, Double.PositiveInfinity, query)
+    if i < 0 then set(world.background)
     else
-      val shape  = world.shape(i)
-      val hit    = Shape.hitAt(shape, ray, query.distance)
-      val normal = Shape.shadingNormal(shape, hit, ray)
+      // The hit as Shape.hitAt and Shape.shadingNormal give it, in the query's fields.
+      Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query)
       mode match
-        case ShadingMode.Quick => pigment(i, hit) * Math.abs(normal.dot(ray.direction))
-        case ShadingMode.Full  =>
-          // Equations 40 and 43: shadow and reflected rays start just off the surface, on the
-          // side the ray came from (the geometric side, even where a smooth normal leans).
-          val s0      = hit.point + hit.normal * Shading.Epsilon
-          val surface = world.surface(i, hit.leaf)
-          val shaded  =
-            lit(surface, pigment(i, hit), normal, normal != hit.normal, s0, hit.point, ray) +
-              beyond(i, surface, hit, normal, s0, ray, depth, insides)
-          // Version 4: a glowing surface adds its emission where it is seen from the side it
-          // emits from (its outward side), after shading; it lights nothing else.
-          if surface.emits && hit.front then shaded + surface.emission else shaded
+        case ShadingMode.Quick =>
+          val c = pigment(i, query.leaf, query.px, query.py, query.pz)
+          val a = Math.abs(query.sx * dx + query.sy * dy + query.sz * dz)
+          red = c.r * a
+          green = c.g * a
+          blue = c.b * a
+        case ShadingMode.Full => shade(i, dx, dy, dz, depth, insides)
 
-  /** The light the surface sends back from every light that reaches S0: diffuse
-    * C ⊙ colour(L) · diffuse · (1 − transmit) · |rn · Sd| and white highlights colour(L) ·
-    * (phong + specular terms), each light scaled by the share of it that reaches S0 and by its
-    * fade A(d) (version 4), d the distance from the hit `point` to the light (an area light's
-    * centre), as POV-Ray measures it.
+  /** The full colour of the hit the query holds on shape `i`, seen along direction d. */
+  private def shade(
+      i: Int,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int,
+      insides: List[Int]
+  ): Unit =
+    // The hit, copied out of the query: shadow rays and further rays reuse it.
+    val px    = query.px
+    val py    = query.py
+    val pz    = query.pz
+    val nx    = query.nx
+    val ny    = query.ny
+    val nz    = query.nz
+    val sx    = query.sx
+    val sy    = query.sy
+    val sz    = query.sz
+    val leaf  = query.leaf
+    val front = query.front
+    // Equations 40 and 43: shadow and reflected rays start just off the surface, on the side the
+    // ray came from (the geometric side, even where a smooth normal leans).
+    val s0x     = px + nx * Shading.Epsilon
+    val s0y     = py + ny * Shading.Epsilon
+    val s0z     = pz + nz * Shading.Epsilon
+    val surface = world.surface(i, leaf)
+    val leaning = sx != nx || sy != ny || sz != nz
+    lit(surface, pigment(i, leaf, px, py, pz), sx, sy, sz, leaning, s0x, s0y, s0z, px, py, pz)(
+      dx,
+      dy,
+      dz
+    )
+    val litR = red
+    val litG = green
+    val litB = blue
+    if depth <= 0 then set(Colour.Black)
+    else if surface.transmit <= 0 then
+      mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
+    else
+      transmitted(i, surface, px, py, pz, nx, ny, nz, sx, sy, sz, s0x, s0y, s0z)(
+        dx,
+        dy,
+        dz,
+        depth,
+        insides
+      )
+    red = litR + red
+    green = litG + green
+    blue = litB + blue
+    // Version 4: a glowing surface adds its emission where it is seen from the side it emits
+    // from (its outward side), after shading; it lights nothing else.
+    if surface.emits && front then
+      red = red + surface.emission.r
+      green = green + surface.emission.g
+      blue = blue + surface.emission.b
+
+  /** The light the surface sends back from every light that reaches S0, left in red, green and
+    * blue: diffuse C ⊙ colour(L) · diffuse · (1 − transmit) · |rn · Sd| and white highlights
+    * colour(L) · (phong + specular terms), each light scaled by the share of it that reaches S0
+    * and by its fade A(d) (version 4), d the distance from the hit point p to the light (an area
+    * light's centre), as POV-Ray measures it. rn is the shading normal s; d the ray's direction.
     *
-    * `leaning` says that `normal` is a smooth mesh's interpolated normal, not the face's own.
+    * `leaning` says that s is a smooth mesh's interpolated normal, not the face's own.
     *
     * Perf: inline, with the channels summed in locals: no Colour or closure per light, and the
     * hit's values stay in one compiled method (RenderBench; docs/performance.md, steps 2 and 9).
@@ -54,12 +149,17 @@ final class Shading(world: World, mode: ShadingMode):
   private inline def lit(
       surface: Surface,
       colour: Colour,
-      normal: Vec3,
+      sx: Double,
+      sy: Double,
+      sz: Double,
       leaning: Boolean,
-      s0: Vec3,
-      point: Vec3,
-      ray: Ray
-  ) =
+      s0x: Double,
+      s0y: Double,
+      s0z: Double,
+      px: Double,
+      py: Double,
+      pz: Double
+  )(dx: Double, dy: Double, dz: Double): Unit =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
     val oneSided = leaning || surface.transmit > 0
     var r        = 0.0
@@ -67,25 +167,33 @@ final class Shading(world: World, mode: ShadingMode):
     var b        = 0.0
     var k        = 0
     while k < world.lights.length do
-      val light   = world.lights(k)
-      val toLight = light.location - s0
-      val reach   = toLight.length
+      val light = world.lights(k)
+      val tx    = light.location.x - s0x
+      val ty    = light.location.y - s0y
+      val tz    = light.location.z - s0z
+      val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
       // Equation 41; a light exactly at S0 shines straight along the normal.
-      val sd  = if reach > 0 then toLight / reach else normal
-      val cos = normal.dot(sd)
+      val sdx = if reach > 0 then tx / reach else sx
+      val sdy = if reach > 0 then ty / reach else sy
+      val sdz = if reach > 0 then tz / reach else sz
+      val cos = sx * sdx + sy * sdy + sz * sdz
       // POV-Ray ignores a light behind the shading normal. A flat opaque surface shadows such a
       // point light by itself; transmitting surfaces, smooth normals and area lights (lit from
       // off-centre sub-lights) need the rule said out loud.
       val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
       if !behind then
-        val share = light.area match
-          case None       => shadows.point(s0, sd, reach)
-          case Some(area) => shadows.area(s0, light.location, area)
+        val share =
+          if light.area.isEmpty then shadows.pointAlong(s0x, s0y, s0z, sdx, sdy, sdz, reach)
+          else shadows.areaFrom(s0x, s0y, s0z, k)
         if share > 0 then
           // Without fade the share is used as it is (the same bits as before version 4).
           val reaching =
             if light.fade.isEmpty then share
-            else share * light.attenuation((light.location - point).length)
+            else
+              val fx = light.location.x - px
+              val fy = light.location.y - py
+              val fz = light.location.z - pz
+              share * light.attenuation(Math.sqrt(fx * fx + fy * fy + fz * fz))
           val lr     = light.colour.r * reaching
           val lg     = light.colour.g * reaching
           val lb     = light.colour.b * reaching
@@ -94,76 +202,101 @@ final class Shading(world: World, mode: ShadingMode):
           g += colour.g * lg * diffuse * facing
           b += colour.b * lb * diffuse * facing
           if surface.highlighted && cos >= Shading.FarSide then
-            val h = Shading.highlight(surface, normal, ray.direction, sd)
+            val h = Shading.highlightAlong(surface, sx, sy, sz, dx, dy, dz, sdx, sdy, sdz)
             r += lr * h
             g += lg * h
             b += lb * h
       k += 1
-    Colour(r, g, b)
+    red = r
+    green = g
+    blue = b
 
-  /** What the surface passes on from further rays: the mirror image, and through a transmitting
-    * surface the light from behind it (or, past the critical angle, the internal reflection).
+  /** reflection · colour(reflected ray, depth − 1) (equations 43–44), black for no mirror, left
+    * in red, green and blue: the ray from S0, d mirrored about the shading normal s.
     */
-  private inline def beyond(
-      i: Int,
-      surface: Surface,
-      hit: Hit,
-      normal: Vec3,
-      s0: Vec3,
-      ray: Ray,
-      depth: Int,
-      insides: List[Int]
-  ): Colour =
-    if depth <= 0 then Colour.Black
-    else if surface.transmit <= 0 then mirror(surface.reflection, normal, s0, ray, depth, insides)
-    else transmitted(i, surface, hit, normal, s0, ray, depth, insides)
-
-  /** reflection · colour(reflected ray, depth − 1) (equations 43–44), black for no mirror. */
   private def mirror(
       reflection: Double,
-      normal: Vec3,
-      s0: Vec3,
-      ray: Ray,
+      sx: Double,
+      sy: Double,
+      sz: Double,
+      s0x: Double,
+      s0y: Double,
+      s0z: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
       depth: Int,
       insides: List[Int]
-  ): Colour =
-    if reflection <= 0 then Colour.Black
-    else trace(Ray(s0, Refraction.reflect(ray.direction, normal)), depth - 1, insides) * reflection
+  ): Unit =
+    if reflection <= 0 then set(Colour.Black)
+    else
+      // Refraction.reflect: Rd − 2(rn · Rd)rn.
+      val k = 2 * (sx * dx + sy * dy + sz * dz)
+      traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+      red = red * reflection
+      green = green * reflection
+      blue = blue * reflection
 
-  /** transmit · colour(ray through the surface) + the mirror term; the ray goes straight on where
-    * the indices match (not counted against the depth, as POV-Ray continues such rays), and is
-    * bent by Heckbert's formula where they differ. Past the critical angle the internal
-    * reflection is added whole, in place of the transmitted and the mirror terms (POV-Ray).
+  /** transmit · colour(ray through the surface) + the mirror term, left in red, green and blue;
+    * the ray goes straight on where the indices match (not counted against the depth, as POV-Ray
+    * continues such rays), and is bent by Heckbert's formula where they differ. Past the critical
+    * angle the internal reflection is added whole, in place of the transmitted and the mirror
+    * terms (POV-Ray).
     */
   private def transmitted(
       i: Int,
       surface: Surface,
-      hit: Hit,
-      normal: Vec3,
-      s0: Vec3,
-      ray: Ray,
-      depth: Int,
-      insides: List[Int]
-  ): Colour =
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      sx: Double,
+      sy: Double,
+      sz: Double,
+      s0x: Double,
+      s0y: Double,
+      s0z: Double
+  )(dx: Double, dy: Double, dz: Double, depth: Int, insides: List[Int]): Unit =
     val (eta, beyondInsides) = Refraction.cross(insides, i, world.surface(_).ior)
-    val behind               = hit.point - hit.normal * Shading.Epsilon
-    def through(direction: Vec3, depthBeyond: Int) =
-      trace(Ray(behind, direction), depthBeyond, beyondInsides) * surface.transmit +
-        mirror(surface.reflection, normal, s0, ray, depth, insides)
-    if Math.abs(eta - 1) < Refraction.SameIndex then through(ray.direction, depth)
+    // The ray through starts just behind the surface.
+    val bx = px - nx * Shading.Epsilon
+    val by = py - ny * Shading.Epsilon
+    val bz = pz - nz * Shading.Epsilon
+    def through(ux: Double, uy: Double, uz: Double, depthBeyond: Int): Unit =
+      traceFrom(bx, by, bz, ux, uy, uz, depthBeyond, beyondInsides)
+      val tr = red * surface.transmit
+      val tg = green * surface.transmit
+      val tb = blue * surface.transmit
+      mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
+      red = tr + red
+      green = tg + green
+      blue = tb + blue
+    if Math.abs(eta - 1) < Refraction.SameIndex then through(dx, dy, dz, depth)
     else
-      Refraction.refract(ray.direction, normal, eta) match
-        case Some(direction) => through(direction, depth - 1)
-        case None            =>
-          trace(Ray(s0, Refraction.reflect(ray.direction, normal)), depth - 1, insides)
+      Refraction.refract(Vec3(dx, dy, dz), Vec3(sx, sy, sz), eta) match
+        case Some(u) => through(u.x, u.y, u.z, depth - 1)
+        case None    =>
+          val k = 2 * (sx * dx + sy * dy + sz * dz)
+          traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
 
-  /** The surface colour C at the hit: the texel or checker cell there, or the plain colour. */
-  private def pigment(i: Int, hit: Hit): Colour = world.surface(i, hit.leaf).pigment match
-    case Pigment.Solid(c)          => c
-    case Pigment.Textured(texture) =>
-      val uv = Shape.surfaceCoordinates(world.shape(i), hit.point, hit.leaf)
-      texture.colourAt(uv.u, uv.v)
-    case checker: Pigment.Checker => Pigment.checkerColour(checker, hit.point)
+  /** The surface colour C of leaf `leaf` of shape `i` at the point p: the texel or checker cell
+    * there, or the plain colour.
+    */
+  private def pigment(i: Int, leaf: Int, px: Double, py: Double, pz: Double): Colour =
+    world.surface(i, leaf).pigment match
+      case Pigment.Solid(c)          => c
+      case Pigment.Textured(texture) =>
+        val uv = Shape.surfaceCoordinates(world.shape(i), Vec3(px, py, pz), leaf)
+        texture.colourAt(uv.u, uv.v)
+      case checker: Pigment.Checker => Pigment.checkerColour(checker, Vec3(px, py, pz))
+
+  /** Leaves `c` in red, green and blue. */
+  private inline def set(c: Colour): Unit =
+    red = c.r
+    green = c.g
+    blue = c.b
 
 /** Constants and pure terms of the shading model. */
 object Shading:
@@ -181,18 +314,49 @@ object Shading:
     * `ComputeSpecularColour`).
     */
   def highlight(surface: Surface, normal: Vec3, direction: Vec3, toLight: Vec3): Double =
+    highlightAlong(
+      surface,
+      normal.x,
+      normal.y,
+      normal.z,
+      direction.x,
+      direction.y,
+      direction.z,
+      toLight.x,
+      toLight.y,
+      toLight.z
+    )
+
+  /** [[highlight]] with the normal n, the direction d and the way to the light l as doubles. */
+  def highlightAlong(
+      surface: Surface,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      lx: Double,
+      ly: Double,
+      lz: Double
+  ): Double =
     val phong =
       if surface.phong <= 0 then 0.0
       else
-        val cos = Refraction.reflect(direction, normal).dot(toLight)
+        // Refraction.reflect(d, n) · l.
+        val k   = 2 * (nx * dx + ny * dy + nz * dz)
+        val cos = (dx - nx * k) * lx + (dy - ny * k) * ly + (dz - nz * k) * lz
         if cos > 0 && (surface.phongSize < 60 || cos > 0.0008) then
           surface.phong * Math.pow(cos, surface.phongSize)
         else 0.0
     val specular =
       if surface.specular <= 0 then 0.0
       else
-        val halfway = (toLight - direction) * 0.5
-        val length  = halfway.length
-        val cos     = if length > 0 then halfway.dot(normal) / length else 0.0
+        // The half-way vector (l − d) / 2, its length and its cosine with n.
+        val hx     = (lx - dx) * 0.5
+        val hy     = (ly - dy) * 0.5
+        val hz     = (lz - dz) * 0.5
+        val length = Math.sqrt(hx * hx + hy * hy + hz * hz)
+        val cos    = if length > 0 then (hx * nx + hy * ny + hz * nz) / length else 0.0
         if cos > 0 then surface.specular * Math.pow(cos, 1 / surface.roughness) else 0.0
     phong + specular

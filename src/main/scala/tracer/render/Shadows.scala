@@ -17,59 +17,41 @@ final class Shadows(world: World, query: Query):
   // once and shared by the cells that have it as a corner; −1 marks one not yet computed). Sized
   // for the scene's largest area light: a Shading is made per row, so a full 64 × 64 grid for a
   // scene without area lights was 32 KB a row (JFR allocation samples, docs/performance.md).
-  private var grid = new Array[Double](world.largestAreaLight)
-
-  // Perf: the sub-light positions centre + offset(u, v) of the world's area lights, computed once
-  // (x, y, z at 3(u·samplesB + v)), so a sample makes no Vec3 or Ray (docs/performance.md, round 4).
-  private val subLights: IArray[Array[Double]] =
-    world.lights.map(l => l.area.fold(Array.emptyDoubleArray)(Shadows.positions(l.location, _)))
-  // Why: the positions for a light not of this world (tests), made on demand and kept for the
-  // next shading point that asks for the same light.
-  private var strayLight: Option[AreaLight] = None
-  private var strayCentre                   = Vec3.Zero
-  private var strayPositions                = Array.emptyDoubleArray
+  private val grid = new Array[Double](world.largestAreaLight)
 
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
     */
   def point(from: Vec3, toward: Vec3, reach: Double): Double =
-    pointAlong(from, toward.x, toward.y, toward.z, reach)
+    pointAlong(from.x, from.y, from.z, toward.x, toward.y, toward.z, reach)
 
-  /** The share of an area light centred at `centre` that reaches `from`, as POV-Ray 3.7 computes
-    * it without `adaptive` (`Trace::TraceAreaLightSubsetShadowRay`): the grid's four corners are
-    * sampled, and a cell wider than one step is split at its middle sample into four cells (the
-    * middle row and column shared when the count is odd); the result is the mean of the four parts.
+  /** The share of the world's light `k`, an area light, that reaches `from`, as POV-Ray 3.7
+    * computes it without `adaptive` (`Trace::TraceAreaLightSubsetShadowRay`): the grid's four
+    * corners are sampled, and a cell wider than one step is split at its middle sample into four
+    * cells (the middle row and column shared when the count is odd); the result is the mean of
+    * the four parts. For a point light, [[point]] toward it.
     */
-  def area(from: Vec3, centre: Vec3, light: AreaLight): Double =
-    val samples = light.samplesA * light.samplesB
-    if grid.length < samples then grid = new Array[Double](samples) // a light not of this world
-    java.util.Arrays.fill(grid, 0, samples, -1.0)
-    val positions = positionsOf(centre, light)
-    cell(from, positions, light, 0, 0, light.samplesA - 1, light.samplesB - 1)
+  def area(from: Vec3, k: Int): Double = areaFrom(from.x, from.y, from.z, k)
 
-  /** The sub-light positions of the area light `light` centred at `centre`. */
-  private def positionsOf(centre: Vec3, light: AreaLight): Array[Double] =
-    // Perf: a plain search of the lights, once per area-light shadow test: indexWhere would
-    // allocate a closure (capturing light and centre) for each.
-    var k     = 0
-    var found = -1
-    while found < 0 && k < world.lights.length do
-      val l = world.lights(k)
-      l.area match
-        case Some(a) if (a eq light) && l.location == centre => found = k
-        case _                                               => ()
-      k += 1
-    if found >= 0 then subLights(found)
-    else
-      if !strayLight.exists(_ eq light) || strayCentre != centre then
-        strayPositions = Shadows.positions(centre, light)
-        strayLight = Some(light)
-        strayCentre = centre
-      strayPositions
+  /** [[area]] from the point (fx, fy, fz). */
+  def areaFrom(fx: Double, fy: Double, fz: Double, k: Int): Double =
+    val light = world.lights(k)
+    light.area match
+      case Some(area) =>
+        java.util.Arrays.fill(grid, 0, area.samplesA * area.samplesB, -1.0)
+        cell(fx, fy, fz, world.subLights(k), area, 0, 0, area.samplesA - 1, area.samplesB - 1)
+      case None =>
+        val tx    = light.location.x - fx
+        val ty    = light.location.y - fy
+        val tz    = light.location.z - fz
+        val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
+        if reach > 0 then pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach) else 1.0
 
   private def cell(
-      from: Vec3,
-      positions: Array[Double],
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      positions: IArray[Double],
       light: AreaLight,
       u1: Int,
       v1: Int,
@@ -81,18 +63,21 @@ final class Shadows(world: World, query: Query):
       val highU = (u1 + u2 + 1) / 2
       val lowV  = (v1 + v2) / 2
       val highV = (v1 + v2 + 1) / 2
-      (cell(from, positions, light, u1, v1, lowU, lowV) +
-        cell(from, positions, light, highU, v1, u2, lowV) +
-        cell(from, positions, light, u1, highV, lowU, v2) +
-        cell(from, positions, light, highU, highV, u2, v2)) * 0.25
+      (cell(fx, fy, fz, positions, light, u1, v1, lowU, lowV) +
+        cell(fx, fy, fz, positions, light, highU, v1, u2, lowV) +
+        cell(fx, fy, fz, positions, light, u1, highV, lowU, v2) +
+        cell(fx, fy, fz, positions, light, highU, highV, u2, v2)) * 0.25
     else
-      (sample(from, positions, light, u1, v1) + sample(from, positions, light, u2, v1) +
-        sample(from, positions, light, u1, v2) + sample(from, positions, light, u2, v2)) * 0.25
+      (sample(fx, fy, fz, positions, light, u1, v1) + sample(fx, fy, fz, positions, light, u2, v1) +
+        sample(fx, fy, fz, positions, light, u1, v2) +
+        sample(fx, fy, fz, positions, light, u2, v2)) * 0.25
 
   /** The share of sub-light (u, v) that reaches `from`, computed once per shading point. */
   private def sample(
-      from: Vec3,
-      positions: Array[Double],
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      positions: IArray[Double],
       light: AreaLight,
       u: Int,
       v: Int
@@ -100,29 +85,46 @@ final class Shadows(world: World, query: Query):
     val k = u * light.samplesB + v
     if grid(k) < 0 then
       // toLight = (centre + offset) − from, its length and its direction, in plain doubles.
-      val tx    = positions(3 * k) - from.x
-      val ty    = positions(3 * k + 1) - from.y
-      val tz    = positions(3 * k + 2) - from.z
+      val tx    = positions(3 * k) - fx
+      val ty    = positions(3 * k + 1) - fy
+      val tz    = positions(3 * k + 2) - fz
       val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
       grid(k) =
-        if reach > 0 then pointAlong(from, tx / reach, ty / reach, tz / reach, reach) else 1.0
+        if reach > 0 then pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
+        else 1.0
     grid(k)
 
-  /** [[point]] with the direction as three doubles. */
-  private def pointAlong(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
+  /** [[point]] from (fx, fy, fz) in unit direction (dx, dy, dz). */
+  def pointAlong(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
     if !world.transmits then
-      if world.occludedAlong(from.x, from.y, from.z, dx, dy, dz, reach, query) then 0.0 else 1.0
-    else transmittance(from, dx, dy, dz, reach)
+      if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
+    else transmittance(fx, fy, fz, dx, dy, dz, reach)
 
   /** The product of the `transmit` of every surface the ray from `from` in direction d crosses
     * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
     */
-  private def transmittance(from: Vec3, dx: Double, dy: Double, dz: Double, reach: Double): Double =
+  private def transmittance(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
     // Perf: the walk's state in local doubles, no Vec3 or Ray per step: the origin moves past
     // each surface crossed.
-    var ox    = from.x
-    var oy    = from.y
-    var oz    = from.z
+    var ox    = fx
+    var oy    = fy
+    var oz    = fz
     var left  = reach
     var share = 1.0
     while share > 0 && left > 0 do
@@ -155,14 +157,3 @@ final class Shadows(world: World, query: Query):
   ): Int =
     if !world.hasLeafSurfaces(i) then 0
     else Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
-
-/** Precomputation for [[Shadows]]. */
-private object Shadows:
-  /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
-  def positions(centre: Vec3, light: AreaLight): Array[Double] =
-    val out = new Array[Double](3 * light.samplesA * light.samplesB)
-    for u <- 0 until light.samplesA; v <- 0 until light.samplesB do
-      val p = centre + light.offset(u, v)
-      val k = u * light.samplesB + v
-      out(3 * k) = p.x; out(3 * k + 1) = p.y; out(3 * k + 2) = p.z
-    out

@@ -1,6 +1,7 @@
 package tracer.render
 
 import tracer.geometry.{Ray, Shape}
+import tracer.math.Vec3
 import tracer.scene.{Light, Scene, SceneObject, Surface}
 
 /** A scene compiled for tracing: its shapes and surfaces in flat arrays, the bounded shapes in a
@@ -12,15 +13,31 @@ final class World(scene: Scene):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
-  private val unbounded                   =
-    Primitives(
-      shapes.toIndexedSeq,
-      shapes.indices.filter(i => Shape.bounds(shapes(i)).isEmpty).toArray
-    )
-  private val bvh = Bvh(shapes.toIndexedSeq)
+  private val bvh                         = Bvh(shapes.toIndexedSeq)
+  // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
+  private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
 
   /** The lights, in document order. */
   val lights: IArray[Light] = IArray.from(scene.lights)
+
+  // Perf: every area light's sub-light positions centre + offset(u, v), computed once a world
+  // and shared by every row task and both integrators (x, y, z at 3(u·samplesB + v); empty for a
+  // point light), so a shadow sample makes no Vec3 (RenderBench; docs/performance.md, round 4).
+  private val subLightGrid: IArray[IArray[Double]] =
+    lights.map(l => l.area.fold(IArray.emptyDoubleIArray)(World.positions(l.location, _)))
+
+  /** The sub-light positions of light `k` (an area light): sub-light (u, v)'s x, y and z at
+    * 3(u·samplesB + v), 3(u·samplesB + v) + 1 and + 2. Empty for a point light.
+    */
+  def subLights(k: Int): IArray[Double] = subLightGrid(k)
+
+  /** Where light `k` shines from: an area light's sub-lights in the order of [[subLights]], or a
+    * point light's location alone.
+    */
+  def subLightPositions(k: Int): IndexedSeq[Vec3] =
+    val grid = subLightGrid(k)
+    if grid.isEmpty then Vector(lights(k).location)
+    else Vector.tabulate(grid.length / 3)(s => Vec3(grid(3 * s), grid(3 * s + 1), grid(3 * s + 2)))
 
   /** The background colour. */
   val background = scene.background
@@ -131,3 +148,14 @@ final class World(scene: Scene):
         if t < bestT then (i, t) else (best, bestT)
       }
       ._1
+
+/** Precomputation for [[World]]. */
+object World:
+  /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
+  private def positions(centre: Vec3, light: tracer.scene.AreaLight): IArray[Double] =
+    val out = new Array[Double](3 * light.samplesA * light.samplesB)
+    for u <- 0 until light.samplesA; v <- 0 until light.samplesB do
+      val p = centre + light.offset(u, v)
+      val k = u * light.samplesB + v
+      out(3 * k) = p.x; out(3 * k + 1) = p.y; out(3 * k + 2) = p.z
+    IArray.unsafeFromArray(out)

@@ -242,8 +242,9 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
   private val blocker          = matte(Triangle(Vec3(0, 2, -50), Vec3(0, 2, 50), Vec3(-50, 2, 0)))
   private val area             = AreaLight(Vec3(2, 0, 0), Vec3(0, 0, 1), 5, 1)
   private def share(x: Double) =
-    val world = World(Scene(camera, objects = List(blocker)))
-    Shadows(world, world.newQuery()).area(Vec3(x, 0, 0), Vec3(0, 4, 0), area)
+    val light = Light(Vec3(0, 4, 0), area = Some(area))
+    val world = World(Scene(camera, lights = List(light), objects = List(blocker)))
+    Shadows(world, world.newQuery()).area(Vec3(x, 0, 0), 0)
 
   test("a shadow ray through a CSG object is dimmed by the transmit of each leaf it crosses"):
     // A union kept whole (as one with an ior is) of two balls on the way to the light, their own

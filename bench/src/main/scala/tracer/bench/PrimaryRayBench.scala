@@ -44,7 +44,12 @@ class PrimaryRayBench:
     while y < config.rows do
       var x = 0
       while x < config.columns do
-        sum += shading.colour(projection.ray(x + 0.5, y + 0.5), config.depth).r
+        // As the renderer traces a pixel: the ray as six doubles, the colour left in the shading.
+        val o = projection.origin
+        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
+          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+        )
+        sum += shading.r
         x += 1
       y += 1
     sum

@@ -3,6 +3,7 @@ package tracer.render.path
 import tracer.geometry.{Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
+import tracer.render.World
 import tracer.scene.{Light, Scene}
 
 /** A light found by next-event estimation: where it is seen from a point, and what it gives.
@@ -46,18 +47,16 @@ enum Emitter:
   * glowing spheres and triangles (top-level shapes, not inside a placement or a combination), and
   * the sky when the background is not black. Each is chosen with the same chance 1/count. Glowing
   * planes, solids and combinations are found by the paths alone.
+  *
+  * @param world `scene` compiled: its lights' sub-lights are the world's
   */
-final class Emitters(scene: Scene):
+final class Emitters(scene: Scene, world: World):
 
   /** Every sampled emitter, lights first, then glowing shapes in document order, then the sky. */
   val all: IArray[Emitter] =
-    val lights = scene.lights.map(l =>
-      Emitter.Points(
-        l,
-        IArray.from(l.area.fold(Seq(l.location)) { a =>
-          for i <- 0 until a.samplesA; j <- 0 until a.samplesB yield l.location + a.offset(i, j)
-        })
-      )
+    // Each light's sub-lights as the world computed them once (a point light: its location).
+    val lights = world.lights.indices.map(k =>
+      Emitter.Points(world.lights(k), IArray.from(world.subLightPositions(k)))
     )
     val shapes = scene.objects.zipWithIndex.collect {
       case (o, i) if o.leafSurfaces.isEmpty && o.surface.emits =>

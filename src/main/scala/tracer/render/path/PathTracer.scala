@@ -29,7 +29,7 @@ final class PathTracer(
     private[path] val depth: Int,
     strategy: PathTracer.Strategy = PathTracer.Strategy.Both
 ):
-  private[path] val emitters = Emitters(scene)
+  private[path] val emitters = Emitters(scene, world)
   private[path] val sampler  = Sampler(settings.sampler, settings.seed, settings.samples)
   private val samples        = settings.samples
 

@@ -6,7 +6,7 @@ import org.scalacheck.Prop.forAll
 import tracer.geometry.{Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
-import tracer.render.SamplerKind
+import tracer.render.{SamplerKind, World}
 import tracer.scene.{Camera, Scene, SceneObject, Surface}
 
 /** The sampler's numbers and the emitters' densities. */
@@ -65,7 +65,7 @@ class SamplerSuite extends ScalaCheckSuite:
       sampler.uniform(0, 0, 0, 0)
     )
 
-  private val emitters = Emitters(
+  private val emitted =
     Scene(
       Camera(Vec3(0, 0, -5), Vec3.Zero),
       Colour.grey(0.3),
@@ -78,7 +78,7 @@ class SamplerSuite extends ScalaCheckSuite:
         )
       )
     )
-  )
+  private val emitters = Emitters(emitted, World(emitted))
 
   property("an emitter sample's density is what density() gives for the point it reaches"):
     forAll(

@@ -1,0 +1,93 @@
+package tracer.render
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.geometry.{
+  Box,
+  Cone,
+  Csg,
+  CsgOperation,
+  Placed,
+  Plane,
+  Ray,
+  Shape,
+  Sphere,
+  Torus,
+  Triangle
+}
+import tracer.math.{Placement, Vec3}
+import tracer.scene.{Camera, Scene, SceneObject}
+import tracer.testkit.Generators.unitVec
+
+/** The shading's hit on plain doubles ([[Hits.record]]) is [[Shape.hitAt]] with
+  * [[Shape.shadingNormal]], bit for bit: the point, the normal facing the ray, the shading normal,
+  * the leaf and the side, on every kind of shape, from outside and inside.
+  */
+class HitsProperties extends ScalaCheckSuite:
+
+  private val near  = Gen.choose(-2.0, 2.0)
+  private val point = for x <- near; y <- near; z <- near yield Vec3(x, y, z)
+  private val size  = Gen.choose(0.3, 2.5)
+
+  private val triangle: Gen[Triangle] =
+    for
+      corners <- Gen.zip(point, point, point).retryUntil(Triangle.isProper.tupled)
+      smooth  <- Gen.option(Gen.zip(unitVec, unitVec, unitVec))
+    yield Triangle(corners._1, corners._2, corners._3, cornerNormals = smooth)
+
+  private val solid: Gen[Shape] = Gen.oneOf(
+    for c <- point; dx <- size; dy <- size; dz <- size yield Box(c, c + Vec3(dx, dy, dz)),
+    for b <- point; axis <- unitVec; h <- size; r0 <- size; r1 <- size
+    yield Cone(b, r0, b + axis * h, r1),
+    for c <- point; r <- size yield Sphere(c, r)
+  )
+
+  private val shape: Gen[Shape] = Gen.frequency(
+    4 -> (for c <- point; r <- size yield Sphere(c, r)),
+    4 -> triangle,
+    1 -> (for n <- unitVec; d <- near yield Plane(n, d)),
+    2 -> solid,
+    1 -> (for r <- size; f <- Gen.choose(0.1, 0.8); s <- size; t <- point
+    yield Placed(Torus(r, r * f), Placement(s, t * 20, t))),
+    2 -> (for
+      op   <- Gen.oneOf(CsgOperation.values.toIndexedSeq)
+      kids <- Gen.listOfN(2, solid)
+    yield Csg(op, kids.toVector))
+  )
+
+  // Rays from anywhere around, or from inside, aimed at points near the shapes.
+  private val ray: Gen[Ray] =
+    for
+      far    <- Gen.oneOf(6.0, 0.5)
+      from   <- unitVec
+      target <- point
+    yield
+      val origin = target + from * far * 2
+      Ray(origin, (target - origin).normalisedOr(Vec3.UnitZ))
+
+  private def bits(a: Double, b: Double) =
+    java.lang.Double.doubleToRawLongBits(a) == java.lang.Double.doubleToRawLongBits(b)
+
+  private def same(a: Vec3, x: Double, y: Double, z: Double) =
+    bits(a.x, x) && bits(a.y, y) && bits(a.z, z)
+
+  property("Hits.record gives Shape.hitAt's point, normals, leaf and side, bit for bit"):
+    forAll(shape, ray) { (shape, ray) =>
+      val world =
+        World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = List(SceneObject(shape))))
+      val query = world.newQuery()
+      val i     = world.nearest(ray, query)
+      i < 0 || {
+        val t = query.distance
+        val o = ray.origin
+        val d = ray.direction
+        Hits.record(shape, o.x, o.y, o.z, d.x, d.y, d.z, t, query)
+        val hit     = Shape.hitAt(shape, ray, t)
+        val shading = Shape.shadingNormal(shape, hit, ray)
+        same(hit.point, query.px, query.py, query.pz) &&
+        same(hit.normal, query.nx, query.ny, query.nz) &&
+        same(shading, query.sx, query.sy, query.sz) &&
+        hit.leaf == query.leaf && hit.front == query.front
+      }
+    }
