@@ -24,7 +24,7 @@ final class Shading(world: World, mode: ShadingMode):
     if i < 0 then world.background
     else
       val shape  = world.shape(i)
-      val hit    = Shape.hitAt(shape, ray, query.distance)
+      val hit    = world.hitAt(i, ray, query)
       val normal = Shape.shadingNormal(shape, hit, ray)
       mode match
         case ShadingMode.Quick => pigment(i, hit) * Math.abs(normal.dot(ray.direction))
