@@ -99,10 +99,10 @@ object Kernel:
       dz: Double,
       buffer: CrossingBuffer
   ): Double = shape match
-    case s: Sphere                                   => sphereDistance(s, ox, oy, oz, dx, dy, dz)
-    case p: Plane                                    => planeDistance(p, ox, oy, oz, dx, dy, dz)
-    case t: Triangle                                 => triangleDistance(t, ox, oy, oz, dx, dy, dz)
-    case m: Mesh                                     =>
+    case s: Sphere   => sphereDistance(s, ox, oy, oz, dx, dy, dz)
+    case p: Plane    => planeDistance(p, ox, oy, oz, dx, dy, dz)
+    case t: Triangle => triangleDistance(t, ox, oy, oz, dx, dy, dz)
+    case m: Mesh     =>
       // Perf: every face on the mesh's arrays, as the reference's fold of `min` (a mesh inside a
       // combination; at the top of a scene a mesh has a tree of its own, render.MeshTree).
       var best = Double.PositiveInfinity

@@ -185,11 +185,11 @@ final class Mesh(
     // Triangle's normal (a × b, Vec3.normalised) and distance (T0 · Pn), operation for operation.
     var f = 0
     while f < faceCount do
-      val i0 = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
-      val x0 = vertices(i0); val y0 = vertices(i0 + 1); val z0 = vertices(i0 + 2)
-      val ax = vertices(i1) - x0; val ay = vertices(i1 + 1) - y0; val az = vertices(i1 + 2) - z0
-      val bx = vertices(i2) - x0; val by = vertices(i2 + 1) - y0; val bz = vertices(i2 + 2) - z0
-      val cx = ay * bz - az * by; val cy = az * bx - ax * bz; val cz = ax * by - ay * bx
+      val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
+      val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
+      val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
+      val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
+      val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
       val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
       if !(len > 0 && len < Double.PositiveInfinity) then
         // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
@@ -311,7 +311,7 @@ object Mesh:
     // kernel's triangles do (Primitives.triangle).
     if t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
     else
-      val x0 = vertices(i0); val y0 = vertices(i0 + 1); val z0 = vertices(i0 + 2)
+      val x0 = vertices(i0); val y0      = vertices(i0 + 1); val z0      = vertices(i0 + 2)
       val ax = vertices(i1) - x0; val ay = vertices(i1 + 1) - y0; val az = vertices(i1 + 2) - z0
       val bx = vertices(i2) - x0; val by = vertices(i2 + 1) - y0; val bz = vertices(i2 + 2) - z0
       val qx = ox + dx * t - x0
@@ -477,10 +477,10 @@ object Shape:
     * tree the fast path.
     */
   def distance(shape: Shape, ray: Ray): Double = shape match
-    case s: Sphere                                   => sphereDistance(s, ray)
-    case p: Plane                                    => planeDistance(p.normal, p.distance, ray)
-    case t: Triangle                                 => triangleDistance(t, ray)
-    case m: Mesh => m.faces.foldLeft(Miss)((best, face) => best min triangleDistance(face, ray))
+    case s: Sphere   => sphereDistance(s, ray)
+    case p: Plane    => planeDistance(p.normal, p.distance, ray)
+    case t: Triangle => triangleDistance(t, ray)
+    case m: Mesh     => m.faces.foldLeft(Miss)((best, face) => best min triangleDistance(face, ray))
     case c: Csg if c.operation == CsgOperation.Union =>
       c.children.foldLeft(Double.PositiveInfinity)((best, child) => best min distance(child, ray))
     case p: Placed =>
@@ -505,9 +505,9 @@ object Shape:
         val outward = (point - s.centre) * (1 / s.radius)
         val inside  = startsInside(s, ray)
         Hit(t, point, if inside then -outward else outward, front = !inside)
-      case p: Plane                                   => facingHit(t, point, p.normal, 0, ray)
-      case tr: Triangle                               => facingHit(t, point, tr.normal, 0, ray)
-      case m: Mesh                                    =>
+      case p: Plane     => facingHit(t, point, p.normal, 0, ray)
+      case tr: Triangle => facingHit(t, point, tr.normal, 0, ray)
+      case m: Mesh      =>
         // The reference: the first face at distance t, as the first of the faces' triangles.
         val f = (0 until m.faceCount).indexWhere(f => triangleDistance(m.face(f), ray) == t)
         if f < 0 then

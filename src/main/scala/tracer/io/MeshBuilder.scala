@@ -45,8 +45,10 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
   /** The numbers of the faces whose placed corners span a triangle, in order. */
   private def properFaces(vertices: IArray[Double]): Array[Int] =
     def at(i: Int) = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
-    val c = obj.corners
-    Array.range(0, obj.faceCount).filter(f => Triangle.isProper(at(c(3 * f)), at(c(3 * f + 1)), at(c(3 * f + 2))))
+    val c          = obj.corners
+    Array
+      .range(0, obj.faceCount)
+      .filter(f => Triangle.isProper(at(c(3 * f)), at(c(3 * f + 1)), at(c(3 * f + 2))))
 
   /** The three numbers of each face of `faces` in `corners`. */
   private def pick(corners: IArray[Int], faces: Array[Int]): IArray[Int] =
@@ -74,7 +76,9 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
         if smooth == Smooth.Auto then VertexNormals.of(obj) else IArray.empty[Option[Vec3]]
       val turned: IndexedSeq[Option[Vec3]] =
         (0 until files).map(j =>
-          place.turn(Vec3(obj.normals(3 * j), obj.normals(3 * j + 1), obj.normals(3 * j + 2))).normalised
+          place
+            .turn(Vec3(obj.normals(3 * j), obj.normals(3 * j + 1), obj.normals(3 * j + 2)))
+            .normalised
         ) ++ computed.map(_.flatMap(n => place.turn(n).normalised))
       val fromFile = obj.normalCorners
       val numbers  = new Array[Int](3 * faces.length)
@@ -94,7 +98,9 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
               (files + i, files + j, files + l)
             )
           else None
-        source.filter((a, b, c) => turned(a).isDefined && turned(b).isDefined && turned(c).isDefined) match
+        source.filter((a, b, c) =>
+          turned(a).isDefined && turned(b).isDefined && turned(c).isDefined
+        ) match
           case Some((a, b, c)) =>
             numbers(3 * k) = a; numbers(3 * k + 1) = b; numbers(3 * k + 2) = c
             any = true
@@ -103,5 +109,9 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
         k += 1
       if !any then (IArray.empty[Double], IArray.empty[Int])
       else
-        val values = IArray.from(turned.iterator.flatMap(n => n.fold(Iterator(0.0, 0.0, 0.0))(v => Iterator(v.x, v.y, v.z))))
+        val values = IArray.from(
+          turned.iterator.flatMap(n =>
+            n.fold(Iterator(0.0, 0.0, 0.0))(v => Iterator(v.x, v.y, v.z))
+          )
+        )
         (values, IArray.unsafeFromArray(numbers))

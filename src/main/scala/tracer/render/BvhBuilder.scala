@@ -59,11 +59,27 @@ private[render] final class BvhBuilder private (
           val top   = split(0, 0, prims.length, 0, 1, Scratch(), prims.length / Tasks, tasks)
           given ExecutionContext = context
           val below              = Future.traverse(tasks.result()) { task =>
-            Future(split(task.node, task.start, task.end, task.depth, task.free, Scratch(), 0, Vector.newBuilder))
+            Future(
+              split(
+                task.node,
+                task.start,
+                task.end,
+                task.depth,
+                task.free,
+                Scratch(),
+                0,
+                Vector.newBuilder
+              )
+            )
           }
           Tree(top + Await.result(below, Duration.Inf).sum, boxes, links, prims)
         case _ =>
-          Tree(split(0, 0, prims.length, 0, 1, Scratch(), 0, Vector.newBuilder), boxes, links, prims)
+          Tree(
+            split(0, 0, prims.length, 0, 1, Scratch(), 0, Vector.newBuilder),
+            boxes,
+            links,
+            prims
+          )
 
   /** The surface area of the box with low corner b(l..l+2) and high corner b(h..h+2). */
   private def area(b: Array[Double], l: Int, h: Int): Double =

@@ -76,7 +76,25 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       var sp =
         if wide.size == 0 then 0
         else
-          WideWalk.push(wb, wn, 0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, bestT, true)
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            true
+          )
       while sp > 0 do
         sp -= 1
         val slot = stack(sp)
@@ -138,7 +156,25 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       var sp  =
         if wide.size == 0 then 0
         else
-          WideWalk.push(wb, wn, 0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit, false)
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            false
+          )
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)

@@ -50,7 +50,7 @@ object Inheritance:
   private def leafSpaces(s: Shape, placements: List[Placement]): Vector[List[Placement]] = s match
     case p: Placed => leafSpaces(p.shape, p.placement :: placements)
     case c: Csg    => c.children.flatMap(leafSpaces(_, Placement.Identity :: placements))
-    case m: Mesh                                             => Vector.fill(m.faceCount)(space(placements))
+    case m: Mesh   => Vector.fill(m.faceCount)(space(placements))
     case _: (Sphere | Plane | Triangle | Box | Cone | Torus) => Vector(space(placements))
 
   /** True when `surface`'s pattern, if it has one, lies in `here`. */
