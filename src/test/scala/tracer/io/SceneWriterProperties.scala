@@ -232,7 +232,7 @@ class SceneWriterProperties extends ScalaCheckSuite:
       def faces(objects: Seq[SceneObject]) = objects.flatMap(o =>
         o.shape match
           case m: Mesh => m.faces.map(SceneObject(_, o.surface)).toVector
-          case other   => Vector(o)
+          case _       => Vector(o)
       )
       assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(faces(flat.objects)))
     finally
