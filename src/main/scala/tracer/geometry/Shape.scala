@@ -179,41 +179,10 @@ final class Mesh(
   )
 
   /** Each face's plane: Pn (x, y, z) and D at 4f, computed as [[Triangle]] computes them. */
-  val planes: IArray[Double] =
-    val out = new Array[Double](4 * faceCount)
-    // Perf: a counted loop over the faces on plain doubles, once per mesh; the arithmetic of
-    // Triangle's normal (a × b, Vec3.normalised) and distance (T0 · Pn), operation for operation.
-    var f = 0
-    while f < faceCount do
-      val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
-      val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
-      val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
-      val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
-      val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
-      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
-      if !(len > 0 && len < Double.PositiveInfinity) then
-        // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
-        throw IllegalArgumentException(s"face $f of a mesh has collinear corners")
-      val nx = cx / len; val ny = cy / len; val nz = cz / len
-      out(4 * f) = nx; out(4 * f + 1) = ny; out(4 * f + 2) = nz
-      out(4 * f + 3) = x0 * nx + y0 * ny + z0 * nz
-      f += 1
-    IArray.unsafeFromArray(out)
+  val planes: IArray[Double] = Mesh.planesOf(vertices, corners)
 
   /** The smallest box around the faces' corners. */
-  val extent: Bounds =
-    // Perf: min and max over the corners' coordinates in one loop, no Bounds per face.
-    val lo = Array.fill(3)(Double.PositiveInfinity)
-    val hi = Array.fill(3)(Double.NegativeInfinity)
-    var k  = 0
-    while k < corners.length do
-      val at = 3 * corners(k)
-      var a  = 0
-      while a < 3 do
-        lo(a) = lo(a) min vertices(at + a); hi(a) = hi(a) max vertices(at + a)
-        a += 1
-      k += 1
-    Bounds(Vec3(lo(0), lo(1), lo(2)), Vec3(hi(0), hi(1), hi(2)))
+  val extent: Bounds = Mesh.extentOf(vertices, corners)
 
   /** Vertex `i` as a point. */
   def vertex(i: Int): Vec3 = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
@@ -277,6 +246,45 @@ final class Mesh(
 
 /** The face test shared by the mesh's reference path and the ray kernel. */
 object Mesh:
+  /** The planes of the faces `corners` on `vertices` (see [[Mesh.planes]]). */
+  private def planesOf(vertices: IArray[Double], corners: IArray[Int]): IArray[Double] =
+    val faceCount = corners.length / 3
+    val out       = new Array[Double](4 * faceCount)
+    // Perf: a counted loop over the faces on plain doubles, once per mesh, in a method of its own
+    // (compiled on its own: in the constructor the loop ran interpreted for seconds on a million
+    // faces); the arithmetic of Triangle's normal (a × b, Vec3.normalised) and distance
+    // (T0 · Pn), operation for operation.
+    var f = 0
+    while f < faceCount do
+      val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
+      val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
+      val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
+      val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
+      val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
+      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
+      if !(len > 0 && len < Double.PositiveInfinity) then
+        // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
+        throw IllegalArgumentException(s"face $f of a mesh has collinear corners")
+      val nx = cx / len; val ny = cy / len; val nz = cz / len
+      out(4 * f) = nx; out(4 * f + 1) = ny; out(4 * f + 2) = nz
+      out(4 * f + 3) = x0 * nx + y0 * ny + z0 * nz
+      f += 1
+    IArray.unsafeFromArray(out)
+
+  /** The box around the corners `corners` name in `vertices`. */
+  private def extentOf(vertices: IArray[Double], corners: IArray[Int]): Bounds =
+    // Perf: min and max over the corners' coordinates in one loop, no Bounds per face.
+    var lx, ly, lz = Double.PositiveInfinity
+    var hx, hy, hz = Double.NegativeInfinity
+    var k          = 0
+    while k < corners.length do
+      val at = 3 * corners(k)
+      lx = Math.min(lx, vertices(at)); hx = Math.max(hx, vertices(at))
+      ly = Math.min(ly, vertices(at + 1)); hy = Math.max(hy, vertices(at + 1))
+      lz = Math.min(lz, vertices(at + 2)); hz = Math.max(hz, vertices(at + 2))
+      k += 1
+    Bounds(Vec3(lx, ly, lz), Vec3(hx, hy, hz))
+
   /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the face with
     * plane (nx, ny, nz, d) and corners at `vertices(i0)`, `vertices(i1)`, `vertices(i2)` (each
     * the first of three doubles), or +∞ on a miss; a hit beyond `cutoff` may be reported as a

@@ -291,8 +291,9 @@ private[render] object BvhBuilder:
     val box      = new Array[Double](6)
 
     def sweepStart(): Unit =
-      java.util.Arrays.fill(box, 0, 3, Double.PositiveInfinity)
-      java.util.Arrays.fill(box, 3, 6, Double.NegativeInfinity)
+      box(0) = Double.PositiveInfinity; box(1) = Double.PositiveInfinity
+      box(2) = Double.PositiveInfinity; box(3) = Double.NegativeInfinity
+      box(4) = Double.NegativeInfinity; box(5) = Double.NegativeInfinity
 
     def grow(b: Int): Unit =
       // Perf: the three axes in a counted loop on the scratch arrays.

@@ -29,24 +29,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   private val vertices = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
-  private val (planes, at) =
-    val order  = faces
-    val planes = new Array[Double](4 * order.length)
-    val at     = new Array[Int](3 * order.length)
-    // Perf: one pass copying each face's plane and corner offsets into leaf order.
-    var k = 0
-    while k < order.length do
-      val f = order(k)
-      var j = 0
-      while j < 4 do
-        planes(4 * k + j) = mesh.planes(4 * f + j)
-        j += 1
-      j = 0
-      while j < 3 do
-        at(3 * k + j) = 3 * mesh.corners(3 * f + j)
-        j += 1
-      k += 1
-    (planes, at)
+  private val (planes, at) = MeshTree.leafOrder(mesh, faces)
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size
@@ -236,3 +219,21 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       dy,
       dz
     )
+
+/** Laying a mesh's faces out for its tree. */
+private object MeshTree:
+  /** The planes (4 doubles a face) and corner offsets (3 ints) of `mesh`'s faces `order`. */
+  def leafOrder(mesh: Mesh, order: Array[Int]): (Array[Double], Array[Int]) =
+    val planes = new Array[Double](4 * order.length)
+    val at     = new Array[Int](3 * order.length)
+    // Perf: one pass copying each face's plane and corner offsets into leaf order, in a method
+    // of its own so that it is compiled apart from the constructor.
+    var k = 0
+    while k < order.length do
+      val f = order(k)
+      planes(4 * k) = mesh.planes(4 * f); planes(4 * k + 1) = mesh.planes(4 * f + 1)
+      planes(4 * k + 2) = mesh.planes(4 * f + 2); planes(4 * k + 3) = mesh.planes(4 * f + 3)
+      at(3 * k) = 3 * mesh.corners(3 * f); at(3 * k + 1) = 3 * mesh.corners(3 * f + 1)
+      at(3 * k + 2) = 3 * mesh.corners(3 * f + 2)
+      k += 1
+    (planes, at)
