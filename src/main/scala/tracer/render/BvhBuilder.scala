@@ -68,7 +68,8 @@ private[render] final class BvhBuilder private (
                 task.free,
                 Scratch(),
                 0,
-                Vector.newBuilder
+                Vector.newBuilder,
+                task.known
               )
             )
           }
@@ -101,13 +102,14 @@ private[render] final class BvhBuilder private (
       free: Int,
       s: Scratch,
       grain: Int,
-      tasks: scala.collection.mutable.Builder[Task, Vector[Task]]
+      tasks: scala.collection.mutable.Builder[Task, Vector[Task]],
+      known: Known = Known.None
   ): Int =
     val n = end - start
     if n <= grain && node > 0 then
-      tasks += Task(node, start, end, depth, free)
+      tasks += Task(node, start, end, depth, free, known)
       0
-    else divide(node, start, end, depth, free, s, grain, tasks)
+    else divide(node, start, end, depth, free, s, grain, tasks, known)
 
   private def divide(
       node: Int,
@@ -117,15 +119,23 @@ private[render] final class BvhBuilder private (
       free: Int,
       s: Scratch,
       grain: Int,
-      tasks: scala.collection.mutable.Builder[Task, Vector[Task]]
+      tasks: scala.collection.mutable.Builder[Task, Vector[Task]],
+      known: Known
   ): Int =
-    // The node's box, and the box of the primitives' centroids.
+    // The node's box, and the box of the primitives' centroids: from the parent's bins when it
+    // had them (Perf: a pass over the primitives saved at every level), else from the primitives.
+    // Why: the centroids' box, narrowed below.
     var cl0, cl1, cl2 = Double.PositiveInfinity
+    // Why: as cl0.
     var ch0, ch1, ch2 = Double.NegativeInfinity
     val nb            = 6 * node
-    for a <- 0 until 3 do
-      boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
-    var k = start
+    if known.found then
+      cl0 = known.lo0; cl1 = known.lo1; cl2 = known.lo2
+      ch0 = known.hi0; ch1 = known.hi1; ch2 = known.hi2
+    else
+      for a <- 0 until 3 do
+        boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
+    var k = if known.found then end else start
     while k < end do
       var a = 0
       while a < 3 do
@@ -154,9 +164,13 @@ private[render] final class BvhBuilder private (
       val binLo    = s.binLo
       val binHi    = s.binHi
       // Bin the primitives along the axis.
+      val binCLo = s.binCLo
+      val binCHi = s.binCHi
       java.util.Arrays.fill(binCount, 0)
       java.util.Arrays.fill(binLo, Double.PositiveInfinity)
       java.util.Arrays.fill(binHi, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCLo, Double.PositiveInfinity)
+      java.util.Arrays.fill(binCHi, Double.NegativeInfinity)
       k = start
       while k < end do
         val b = bin(k)
@@ -165,6 +179,8 @@ private[render] final class BvhBuilder private (
         while a < 3 do
           binLo(3 * b + a) = binLo(3 * b + a) min boxLo(3 * k + a)
           binHi(3 * b + a) = binHi(3 * b + a) max boxHi(3 * k + a)
+          binCLo(3 * b + a) = binCLo(3 * b + a) min centre(3 * k + a)
+          binCHi(3 * b + a) = binCHi(3 * b + a) max centre(3 * k + a)
           a += 1
         k += 1
       // Sweep from the left: leftCost(s) = count · area of bins 0..s.
@@ -200,11 +216,28 @@ private[render] final class BvhBuilder private (
           else
             swap(i, j)
             j -= 1
-        val mid  = if i == start || i == end then (start + end) / 2 else i
-        val left = free // the right child at left + 1; then the left subtree's range, the right's
+        val binned = i != start && i != end
+        val mid    = if binned then i else (start + end) / 2
+        val left   = free // the right child at left + 1; then the left subtree's range, the right's
         links(2 * node) = left; links(2 * node + 1) = 0
-        val l = split(left, start, mid, depth + 1, free + 2, s, grain, tasks)
-        val r = split(left + 1, mid, end, depth + 1, free + 2 * (mid - start), s, grain, tasks)
+        // Split by the bins, each child's box and centroids' box are its bins' (min and max are
+        // exact, so the same as from its primitives); a median split finds them itself.
+        // Both before the left subtree is built: it reuses the scratch bins.
+        val leftKnown  = s.side(binned, 0, best, 6 * left, boxes)
+        val rightKnown = s.side(binned, best + 1, Bins - 1, 6 * (left + 1), boxes)
+        val l          = split(left, start, mid, depth + 1, free + 2, s, grain, tasks, leftKnown)
+        val r          =
+          split(
+            left + 1,
+            mid,
+            end,
+            depth + 1,
+            free + 2 * (mid - start),
+            s,
+            grain,
+            tasks,
+            rightKnown
+          )
         1 + l + r
 
   /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
@@ -259,7 +292,15 @@ private[render] object BvhBuilder:
       var a  = 0
       while a < 3 do
         val x0 = v(i0 + a); val x1 = v(i1 + a); val x2 = v(i2 + a)
-        setBox(boxLo, boxHi, centre, f, a, x0 min x1 min x2, x0 max x1 max x2)
+        setBox(
+          boxLo,
+          boxHi,
+          centre,
+          f,
+          a,
+          Math.min(Math.min(x0, x1), x2),
+          Math.max(Math.max(x0, x1), x2)
+        )
         a += 1
       f += 1
     new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n))
@@ -279,8 +320,34 @@ private[render] object BvhBuilder:
     boxHi(3 * k + axis) = high + pad
     centre(3 * k + axis) = (low + high) / 2
 
-  /** A subtree left for the pool: its node, primitives, depth and first free node number. */
-  private final case class Task(node: Int, start: Int, end: Int, depth: Int, free: Int)
+  /** A subtree left for the pool: its node, primitives, depth, first free node number and what
+    * its parent's bins told of it.
+    */
+  private final case class Task(
+      node: Int,
+      start: Int,
+      end: Int,
+      depth: Int,
+      free: Int,
+      known: Known
+  )
+
+  /** A node's centroids' box from its parent's bins (its own box then written already), when
+    * `found`.
+    */
+  private final case class Known(
+      found: Boolean,
+      lo0: Double,
+      lo1: Double,
+      lo2: Double,
+      hi0: Double,
+      hi1: Double,
+      hi2: Double
+  )
+
+  private object Known:
+    /** Nothing known: the node finds its boxes from its primitives. */
+    val None: Known = Known(false, 0, 0, 0, 0, 0, 0)
 
   /** One thread's scratch space for a split: per-bin counts and boxes, and the sweeps' results. */
   private final class Scratch:
@@ -289,6 +356,33 @@ private[render] object BvhBuilder:
     val binHi    = new Array[Double](3 * Bins)
     val leftCost = new Array[Double](Bins)
     val box      = new Array[Double](6)
+    val binCLo   = new Array[Double](3 * Bins)
+    val binCHi   = new Array[Double](3 * Bins)
+
+    /** When `binned`: writes the box of bins `from` to `to` into `boxes` at `at` and returns
+      * their centroids' box; else [[Known.None]].
+      */
+    def side(binned: Boolean, from: Int, to: Int, at: Int, boxes: Array[Double]): Known =
+      if !binned then Known.None
+      else
+        // Why: the bins' boxes gathered in a counted loop.
+        var l0, l1, l2, c0, c1, c2 = Double.PositiveInfinity
+        // Why: as l0.
+        var h0, h1, h2, d0, d1, d2 = Double.NegativeInfinity
+        var b                      = from
+        while b <= to do
+          l0 = Math.min(l0, binLo(3 * b)); l1 = Math.min(l1, binLo(3 * b + 1))
+          l2 = Math.min(l2, binLo(3 * b + 2))
+          h0 = Math.max(h0, binHi(3 * b)); h1 = Math.max(h1, binHi(3 * b + 1))
+          h2 = Math.max(h2, binHi(3 * b + 2))
+          c0 = Math.min(c0, binCLo(3 * b)); c1 = Math.min(c1, binCLo(3 * b + 1))
+          c2 = Math.min(c2, binCLo(3 * b + 2))
+          d0 = Math.max(d0, binCHi(3 * b)); d1 = Math.max(d1, binCHi(3 * b + 1))
+          d2 = Math.max(d2, binCHi(3 * b + 2))
+          b += 1
+        boxes(at) = l0; boxes(at + 1) = l1; boxes(at + 2) = l2
+        boxes(at + 3) = h0; boxes(at + 4) = h1; boxes(at + 5) = h2
+        Known(true, c0, c1, c2, d0, d1, d2)
 
     def sweepStart(): Unit =
       box(0) = Double.PositiveInfinity; box(1) = Double.PositiveInfinity
@@ -307,7 +401,7 @@ private[render] object BvhBuilder:
   val ParallelFrom = 65536
 
   /** Subtrees per build on a pool, at most about: enough to keep the threads evenly busy. */
-  val Tasks = 32
+  val Tasks = 6
 
   /** The most shapes a leaf holds when splitting would cost more. */
   val MaxLeaf = 4
