@@ -102,7 +102,7 @@ object PovRay:
         else
           s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$leafRest"
       case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$leafRest"
-      case m: Mesh =>
+      case m: Mesh   =>
         // Its faces, each the triangle it stands for, as when each was a shape of its own.
         Iterator
           .range(0, m.faceCount)
