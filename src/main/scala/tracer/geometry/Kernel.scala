@@ -103,9 +103,18 @@ object Kernel:
       buffer: CrossingBuffer,
       cutoff: Double = Double.PositiveInfinity
   ): Double = shape match
-    case s: Sphere                                   => sphereDistance(s, ox, oy, oz, dx, dy, dz)
-    case p: Plane                                    => planeDistance(p, ox, oy, oz, dx, dy, dz)
-    case t: Triangle                                 => triangleDistance(t, ox, oy, oz, dx, dy, dz)
+    case s: Sphere   => sphereDistance(s, ox, oy, oz, dx, dy, dz)
+    case p: Plane    => planeDistance(p, ox, oy, oz, dx, dy, dz)
+    case t: Triangle => triangleDistance(t, ox, oy, oz, dx, dy, dz)
+    case m: Mesh     =>
+      // Perf: every face on the mesh's arrays, as the reference's fold of `min` (a mesh inside a
+      // combination; at the top of a scene a mesh has a tree of its own, render.MeshTree).
+      var best = Double.PositiveInfinity
+      var f    = 0
+      while f < m.faceCount do
+        best = Math.min(best, Mesh.distanceTo(m, f, best, ox, oy, oz, dx, dy, dz))
+        f += 1
+      best
     case c: Csg if c.operation == CsgOperation.Union =>
       // Perf: the reference's foldLeft of `min`, as a loop; a child whose box the ray misses, or
       // enters beyond the best so far, cannot lower it (SolidsBench).
@@ -157,7 +166,7 @@ object Kernel:
         val end = firstCrossing(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from)
         broughtBack(p.back, s, buffer, from, end, normals = true)
       }
-    case other: (Sphere | Plane | Triangle | Box | Cone | Torus) =>
+    case other: (Sphere | Plane | Triangle | Mesh | Box | Cone | Torus) =>
       if collect(other, ox, oy, oz, dx, dy, dz, buffer, from) > from then from + 1 else from
 
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
@@ -198,6 +207,19 @@ object Kernel:
       if t < Double.PositiveInfinity then
         buffer.put(from, t, tr.normal.x, tr.normal.y, tr.normal.z, 0); from + 1
       else from
+    case m: Mesh =>
+      // Perf: each face's crossing on the mesh's arrays, its leaf the face, sorted stably by t.
+      var end = from
+      var f   = 0
+      while f < m.faceCount do
+        val t = Mesh.distanceTo(m, f, Double.PositiveInfinity, ox, oy, oz, dx, dy, dz)
+        if t < Double.PositiveInfinity then
+          val p = m.planes
+          buffer.put(end, t, p(4 * f), p(4 * f + 1), p(4 * f + 2), f)
+          end += 1
+        f += 1
+      buffer.sort(from, end)
+      end
     case b: Box    => box(b, ox, oy, oz, dx, dy, dz, buffer, from)
     case c: Cone   => cone(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case t: Torus  => torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals)
@@ -279,6 +301,7 @@ object Kernel:
     case p: Plane =>
       px * p.normal.x + py * p.normal.y + pz * p.normal.z < p.distance + Solids.InsideTolerance
     case _: Triangle => false
+    case _: Mesh     => false
     case b: Box      =>
       val lo = b.extent.lo; val hi = b.extent.hi
       px >= lo.x && px <= hi.x && py >= lo.y && py <= hi.y && pz >= lo.z && pz <= hi.z

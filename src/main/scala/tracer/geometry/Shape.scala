@@ -135,6 +135,239 @@ object Triangle:
   def isProper(t0: Vec3, t1: Vec3, t2: Vec3): Boolean =
     (t1 - t0).cross(t2 - t0).normalised.isDefined
 
+/** A triangle mesh (the `mesh` element): one shape whose faces share an array of vertices, each
+  * face an index triple, with optional shared normals and texture coordinates (issue 23).
+  *
+  * Face f is the triangle [[face]](f), with exactly the values a [[Triangle]] of its corners has;
+  * every total function on shapes treats the mesh as the union of its faces, face f as leaf f
+  * (as a [[Csg]] union of the faces would number them), and a tie between faces goes to the lower
+  * face, as one between the triangles of a scene goes to the earlier one. The faces' planes
+  * (Pn, D) are computed once, here; the rest of a face's constants are derived from its corners
+  * when a ray meets it (`Mesh.faceDistance`).
+  *
+  * @param vertices      3 doubles a vertex: x, y, z, in the space the mesh is placed in
+  * @param corners       3 vertex numbers a face, in the file's corner order; every face proper
+  *   ([[Triangle.isProper]])
+  * @param normals       3 doubles a unit normal, shared by the corners that name it
+  * @param cornerNormals 3 normal numbers a face, or −1 three times for a flat face; empty when
+  *   every face is flat
+  * @param uvs           2 doubles a texture coordinate (u, v)
+  * @param cornerUvs     3 texture coordinate numbers a face, or −1 three times for a face
+  *   without them; empty when no face has them
+  */
+final class Mesh(
+    val vertices: IArray[Double],
+    val corners: IArray[Int],
+    val normals: IArray[Double] = IArray.empty[Double],
+    val cornerNormals: IArray[Int] = IArray.empty[Int],
+    val uvs: IArray[Double] = IArray.empty[Double],
+    val cornerUvs: IArray[Int] = IArray.empty[Int]
+) extends Shape:
+  /** The number of faces, ≥ 1. */
+  val faceCount: Int = corners.length / 3
+  require(
+    faceCount > 0 && corners.length == 3 * faceCount,
+    s"a mesh needs at least one face of three corners, got ${corners.length} corners"
+  )
+  require(
+    cornerNormals.isEmpty || cornerNormals.length == corners.length,
+    "a mesh's corner normals must be given for every face or for none"
+  )
+  require(
+    cornerUvs.isEmpty || cornerUvs.length == corners.length,
+    "a mesh's corner texture coordinates must be given for every face or for none"
+  )
+
+  /** Each face's plane: Pn (x, y, z) and D at 4f, computed as [[Triangle]] computes them. */
+  val planes: IArray[Double] = Mesh.planesOf(vertices, corners)
+
+  /** The smallest box around the faces' corners. */
+  val extent: Bounds = Mesh.extentOf(vertices, corners)
+
+  /** Vertex `i` as a point. */
+  def vertex(i: Int): Vec3 = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
+
+  /** The unit normal of face `f` (its plane's Pn). */
+  def faceNormal(f: Int): Vec3 = Vec3(planes(4 * f), planes(4 * f + 1), planes(4 * f + 2))
+
+  /** True when face `f` shades with its corners' normals interpolated. */
+  def smoothFace(f: Int): Boolean = cornerNormals.nonEmpty && cornerNormals(3 * f) >= 0
+
+  /** True when face `f` has texture coordinates at its corners. */
+  def texturedFace(f: Int): Boolean = cornerUvs.nonEmpty && cornerUvs(3 * f) >= 0
+
+  /** Face `f` as the triangle it stands for: its corners, texture coordinates and normals. */
+  def face(f: Int): Triangle =
+    def normal(k: Int) =
+      val at = 3 * cornerNormals(3 * f + k)
+      Vec3(normals(at), normals(at + 1), normals(at + 2))
+    def uv(k: Int) =
+      val at = 2 * cornerUvs(3 * f + k)
+      SurfaceCoordinates(uvs(at), uvs(at + 1))
+    Triangle(
+      vertex(corners(3 * f)),
+      vertex(corners(3 * f + 1)),
+      vertex(corners(3 * f + 2)),
+      Option.when(texturedFace(f))((uv(0), uv(1), uv(2))),
+      Option.when(smoothFace(f))((normal(0), normal(1), normal(2)))
+    )
+
+  /** Every face, in order, as [[face]] gives it. */
+  def faces: Iterator[Triangle] = Iterator.range(0, faceCount).map(face)
+
+  /** The mesh with its vertices moved and its normals turned by `m` (normalised, as a placed
+    * triangle's are); the same faces.
+    */
+  def transformed(m: Transform): Mesh =
+    def each(xs: IArray[Double], f: Vec3 => Vec3): IArray[Double] =
+      IArray.from(Iterator.range(0, xs.length / 3).flatMap { i =>
+        val v = f(Vec3(xs(3 * i), xs(3 * i + 1), xs(3 * i + 2)))
+        Iterator(v.x, v.y, v.z)
+      })
+    Mesh(
+      each(vertices, m.point),
+      corners,
+      each(normals, n => m.normal(n).normalisedOr(n)),
+      cornerNormals,
+      uvs,
+      cornerUvs
+    )
+
+  override def equals(that: Any): Boolean = that match
+    case m: Mesh =>
+      vertices.sameElements(m.vertices) && corners.sameElements(m.corners) &&
+      normals.sameElements(m.normals) && cornerNormals.sameElements(m.cornerNormals) &&
+      uvs.sameElements(m.uvs) && cornerUvs.sameElements(m.cornerUvs)
+    case _ => false
+
+  override def hashCode: Int = (faceCount, vertices.length, extent).hashCode
+
+  override def toString: String = s"Mesh($faceCount faces, ${vertices.length / 3} vertices)"
+
+/** The face test shared by the mesh's reference path and the ray kernel. */
+object Mesh:
+  /** The planes of the faces `corners` on `vertices` (see [[Mesh.planes]]). */
+  private def planesOf(vertices: IArray[Double], corners: IArray[Int]): IArray[Double] =
+    val faceCount = corners.length / 3
+    val out       = new Array[Double](4 * faceCount)
+    // Perf: a counted loop over the faces on plain doubles, once per mesh, in a method of its own
+    // (compiled on its own: in the constructor the loop ran interpreted for seconds on a million
+    // faces); the arithmetic of Triangle's normal (a × b, Vec3.normalised) and distance
+    // (T0 · Pn), operation for operation.
+    var f = 0
+    while f < faceCount do
+      val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
+      val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
+      val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
+      val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
+      val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
+      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
+      if !(len > 0 && len < Double.PositiveInfinity) then
+        // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
+        throw IllegalArgumentException(s"face $f of a mesh has collinear corners")
+      val nx = cx / len; val ny = cy / len; val nz = cz / len
+      out(4 * f) = nx; out(4 * f + 1) = ny; out(4 * f + 2) = nz
+      out(4 * f + 3) = x0 * nx + y0 * ny + z0 * nz
+      f += 1
+    IArray.unsafeFromArray(out)
+
+  /** The box around the corners `corners` name in `vertices`. */
+  private def extentOf(vertices: IArray[Double], corners: IArray[Int]): Bounds =
+    // Perf: min and max over the corners' coordinates in one loop, no Bounds per face.
+    var lx, ly, lz = Double.PositiveInfinity
+    var hx, hy, hz = Double.NegativeInfinity
+    var k          = 0
+    while k < corners.length do
+      val at = 3 * corners(k)
+      lx = Math.min(lx, vertices(at)); hx = Math.max(hx, vertices(at))
+      ly = Math.min(ly, vertices(at + 1)); hy = Math.max(hy, vertices(at + 1))
+      lz = Math.min(lz, vertices(at + 2)); hz = Math.max(hz, vertices(at + 2))
+      k += 1
+    Bounds(Vec3(lx, ly, lz), Vec3(hx, hy, hz))
+
+  /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the face with
+    * plane (nx, ny, nz, d) and corners at `vertices(i0)`, `vertices(i1)`, `vertices(i2)` (each
+    * the first of three doubles), or +∞ on a miss; a hit beyond `cutoff` may be reported as a
+    * miss. Bit for bit `Shape.distance` of the face's [[Triangle]]: the plane test (equations
+    * 24–27), then equations 32–34 with a = T1 − T0, b = T2 − T0 and the constants a · a, b · b,
+    * a · b and (a · a)(b · b) − (a · b)² formed as [[Triangle]] forms them.
+    */
+  inline def faceDistance(
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      d: Double,
+      vertices: IArray[Double],
+      i0: Int,
+      i1: Int,
+      i2: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val vd = nx * dx + ny * dy + nz * dz
+    val t  =
+      if vd == 0 then Double.PositiveInfinity
+      else
+        val s = (d - (nx * ox + ny * oy + nz * oz)) / vd
+        if s > 0 then s else Double.PositiveInfinity
+    // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped, as the
+    // kernel's triangles do (Primitives.triangle).
+    if t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity
+    else
+      val x0 = vertices(i0); val y0      = vertices(i0 + 1); val z0      = vertices(i0 + 2)
+      val ax = vertices(i1) - x0; val ay = vertices(i1 + 1) - y0; val az = vertices(i1 + 2) - z0
+      val bx = vertices(i2) - x0; val by = vertices(i2 + 1) - y0; val bz = vertices(i2 + 2) - z0
+      val qx = ox + dx * t - x0
+      val qy = oy + dy * t - y0
+      val qz = oz + dz * t - z0
+      val qa = qx * ax + qy * ay + qz * az
+      val qb = qx * bx + qy * by + qz * bz
+      val bb = bx * bx + by * by + bz * bz
+      val ab = ax * bx + ay * by + az * bz
+      val aa = ax * ax + ay * ay + az * az
+      val u  = (bb * qa - ab * qb) / (aa * bb - ab * ab)
+      if !(u >= 0) then Double.PositiveInfinity
+      else
+        val v = (qb - u * ab) / bb
+        if v >= 0 && u + v <= 1 then t else Double.PositiveInfinity
+
+  /** [[faceDistance]] of face `f` of `mesh`, from its own arrays. */
+  inline def distanceTo(
+      mesh: Mesh,
+      f: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    val p = mesh.planes
+    val c = mesh.corners
+    faceDistance(
+      p(4 * f),
+      p(4 * f + 1),
+      p(4 * f + 2),
+      p(4 * f + 3),
+      mesh.vertices,
+      3 * c(3 * f),
+      3 * c(3 * f + 1),
+      3 * c(3 * f + 2),
+      cutoff,
+      ox,
+      oy,
+      oz,
+      dx,
+      dy,
+      dz
+    )
+
 /** A box with faces parallel to the axes, between two opposite corners (scene format v3; POV-Ray's
   * `box`).
   *
@@ -252,12 +485,15 @@ object Shape:
   /** The distance t > 0 along `ray` to the nearest intersection with `shape`, or
     * `Double.PositiveInfinity` when the ray misses. `ray.direction` must be a unit vector.
     *
-    * This is the hot test of the tracer: it allocates nothing the JIT cannot remove.
+    * This is the hot test of the tracer: it allocates nothing the JIT cannot remove, except on a
+    * mesh, where it is the reference (each face as its [[Triangle]]) and the ray kernel's mesh
+    * tree the fast path.
     */
   def distance(shape: Shape, ray: Ray): Double = shape match
-    case s: Sphere                                   => sphereDistance(s, ray)
-    case p: Plane                                    => planeDistance(p.normal, p.distance, ray)
-    case t: Triangle                                 => triangleDistance(t, ray)
+    case s: Sphere   => sphereDistance(s, ray)
+    case p: Plane    => planeDistance(p.normal, p.distance, ray)
+    case t: Triangle => triangleDistance(t, ray)
+    case m: Mesh     => m.faces.foldLeft(Miss)((best, face) => best min triangleDistance(face, ray))
     case c: Csg if c.operation == CsgOperation.Union =>
       c.children.foldLeft(Double.PositiveInfinity)((best, child) => best min distance(child, ray))
     case p: Placed =>
@@ -282,8 +518,15 @@ object Shape:
         val outward = (point - s.centre) * (1 / s.radius)
         val inside  = startsInside(s, ray)
         Hit(t, point, if inside then -outward else outward, front = !inside)
-      case p: Plane                                   => facingHit(t, point, p.normal, 0, ray)
-      case tr: Triangle                               => facingHit(t, point, tr.normal, 0, ray)
+      case p: Plane     => facingHit(t, point, p.normal, 0, ray)
+      case tr: Triangle => facingHit(t, point, tr.normal, 0, ray)
+      case m: Mesh      =>
+        // The reference: the first face at distance t, as the first of the faces' triangles.
+        val f = (0 until m.faceCount).indexWhere(f => triangleDistance(m.face(f), ray) == t)
+        if f < 0 then
+          // Why: a t that is no face's distance is a caller's bug, as on the general path below.
+          throw IllegalArgumentException(s"Shape.hitAt: no face of $m at t = $t along $ray")
+        facingHit(t, point, m.faceNormal(f), f, ray)
       case other: (Box | Cone | Torus | Placed | Csg) =>
         // The general path: the nearest crossing again, for its normal and leaf: the first of
         // `crossings`, here from the kernel on this thread's buffer, which finds it without a
@@ -299,6 +542,13 @@ object Shape:
           // Why: distance is the first crossing, so a t from it always has one (ShapeProperties);
           // none means a caller's t that is not a hit, a bug a made-up normal would only hide.
           throw IllegalArgumentException(s"Shape.hitAt: no crossing of $other along $ray (t = $t)")
+
+  /** The hit at distance `t` along `ray` on face `face` of `mesh`, which the ray meets there (the
+    * face the ray kernel found): what [[hitAt]] gives when that face is the first at t, without
+    * looking for it.
+    */
+  def hitOnFace(mesh: Mesh, face: Int, ray: Ray, t: Double): Hit =
+    facingHit(t, ray.at(t), mesh.faceNormal(face), face, ray)
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector.
@@ -320,6 +570,10 @@ object Shape:
     case tr: Triangle =>
       val t = triangleDistance(tr, ray)
       if t < Miss then List(Crossing(t, tr.normal, 0)) else Nil
+    case m: Mesh =>
+      (0 until m.faceCount).toList
+        .flatMap(f => crossings(m.face(f), ray).map(_.copy(leaf = f)))
+        .sortBy(_.t)
     case b: Box    => Solids.boxCrossings(b, ray)
     case c: Cone   => Solids.coneCrossings(c, ray)
     case t: Torus  => Solids.torusCrossings(t, ray)
@@ -337,15 +591,19 @@ object Shape:
     case s: Sphere   => (point - s.centre).lengthSquared < s.radiusSquared
     case p: Plane    => point.dot(p.normal) < p.distance + Solids.InsideTolerance
     case _: Triangle => false
+    case _: Mesh     => false
     case b: Box      => Solids.insideBox(b, point)
     case c: Cone     => Solids.insideCone(c, point)
     case t: Torus    => Solids.insideTorus(t, point)
     case p: Placed   => inside(p.shape, p.transform.pointBack(point))
     case c: Csg      => Combination.inside(c, point)
 
-  /** The number of primitives in `shape`: 1, or for a combination the sum over its children. */
+  /** The number of primitives in `shape`: 1, for a mesh its faces, for a combination the sum over
+    * its children.
+    */
   def leafCount(shape: Shape): Int = shape match
     case c: Csg                                              => c.leafCounts.sum
+    case m: Mesh                                             => m.faceCount
     case p: Placed                                           => leafCount(p.shape)
     case _: (Sphere | Plane | Triangle | Box | Cone | Torus) => 1
 
@@ -358,6 +616,7 @@ object Shape:
       Some(Bounds(s.centre - r, s.centre + r))
     case _: Plane    => None
     case t: Triangle => Some(Bounds.around(Seq(t.t0, t.t1, t.t2)))
+    case m: Mesh     => Some(m.extent)
     case b: Box      => Some(b.extent)
     case c: Cone => Some(disc(c.base, c.baseRadius, c.axis).union(disc(c.cap, c.capRadius, c.axis)))
     case t: Torus =>
@@ -398,13 +657,17 @@ object Shape:
           val blended = n0 * (1 - u - v) + n1 * u + n2 * v
           facing(blended.normalisedOr(hit.normal), ray)
         case None => hit.normal
+    case m: Mesh =>
+      // A mesh's hit names its face as its leaf.
+      if m.smoothFace(hit.leaf) then shadingNormal(m.face(hit.leaf), hit, ray) else hit.normal
     case _: (Sphere | Plane | Box | Cone | Torus | Placed | Csg) => hit.normal
 
   /** The texture coordinates of `point` on `shape` (rendering.md, Textures); `leaf` says which
     * primitive of a combination the point is on.
     *
     * Sphere: equations 35–38 with the outward normal. Triangle: the (u, v) of equations 33–34, or
-    * for a mesh triangle its corners' coordinates interpolated at (u, v) and wrapped into [0, 1).
+    * for a mesh triangle its corners' coordinates interpolated at (u, v) and wrapped into [0, 1);
+    * a mesh: those of its face number `leaf`.
     * A placed shape: those of the point taken back into its own space. Shapes that take no
     * texture (planes and the version 3 solids): (0, 0).
     */
@@ -423,6 +686,7 @@ object Shape:
               wrap(w * c0.u + u * c1.u + v * c2.u),
               wrap(w * c0.v + u * c1.v + v * c2.v)
             )
+      case m: Mesh   => surfaceCoordinates(m.face(leaf), point)
       case p: Placed => surfaceCoordinates(p.shape, p.transform.pointBack(point), leaf)
       case c: Csg    =>
         val i = c.firstLeaves.lastIndexWhere(_ <= leaf)

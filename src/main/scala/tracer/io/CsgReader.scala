@@ -1,6 +1,6 @@
 package tracer.io
 
-import tracer.geometry.{Csg, CsgOperation, Placed, Shape, Triangle}
+import tracer.geometry.{Csg, CsgOperation, Mesh, Placed, Shape, Triangle}
 import tracer.math.Placement
 import tracer.scene.{SceneObject, Surface}
 
@@ -20,7 +20,7 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
     case "mesh" =>
       shapes
         .mesh(e, Enclosure.Top)
-        .map((triangles, surface) => triangles.map(SceneObject(_, surface)))
+        .map((mesh, surface) => mesh.map(SceneObject(_, surface)).toVector)
     case _ =>
       piece(e, Enclosure.Top).map { p =>
         if e.name == "union" && p.whole.ior == 1 then split(p.shape, p.surfaces, Nil)
@@ -33,9 +33,10 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
     case "plane"    => shapes.plane(e, at)
     case "triangle" => shapes.triangle(e, at)
     case "mesh"     =>
-      shapes
-        .mesh(e, at)
-        .map((ts, s) => Piece(Csg(CsgOperation.Union, ts), Vector.fill(ts.length)(s), s))
+      shapes.mesh(e, at).flatMap {
+        case (Some(m), s) => Right(Piece(m, Vector.fill(m.faceCount)(s), s))
+        case (None, _)    => e.fail("the mesh has no faces whose corners are not collinear")
+      }
     case "box"          => shapes.box(e, at)
     case "cylinder"     => shapes.cylinder(e, at)
     case "cone"         => shapes.cone(e, at)
@@ -96,7 +97,9 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
           whole(placed, leaves, if leaves.forall(_ == leaves.head) then leaves.head else Surface())
         )
 
-  /** `shape` placed by `p`: a triangle's corners and normals moved, anything else wrapped. */
+  /** `shape` placed by `p`: a triangle's or mesh's corners and normals moved, anything else
+    * wrapped.
+    */
   private def place(shape: Shape, p: Placement): Shape = shape match
     case t: Triangle =>
       val m                         = p.transform
@@ -108,4 +111,5 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
         t.textureCorners,
         t.cornerNormals.map((a, b, c) => (turn(a), turn(b), turn(c)))
       )
-    case other => shapes.placed(other, p)
+    case m: Mesh => m.transformed(p.transform)
+    case other   => shapes.placed(other, p)

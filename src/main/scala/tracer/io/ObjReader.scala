@@ -21,8 +21,59 @@ final case class ObjTriangle(
     vertices: (Int, Int, Int) = (0, 0, 0)
 )
 
-/** The triangles of an OBJ file, and the kinds of statement it skipped (for one warning). */
-final case class ObjMesh(triangles: Vector[ObjTriangle], skippedKinds: List[String])
+/** The triangles of an OBJ file as indexed arrays, and the kinds of statement it skipped (for one
+  * warning). Triangle k's corners are `corners(3k until 3k + 3)` (0-based `v` numbers), likewise
+  * its `vt` and `vn` numbers, −1 three times for a triangle without them (a polygon's fan has them
+  * only when every corner of the polygon has one); those two arrays are empty when no triangle
+  * has any.
+  *
+  * @param vertices       3 doubles a `v`: x, y, z
+  * @param texture        2 doubles a `vt`: u, v (0 when not written)
+  * @param normals        3 doubles a `vn`, as written (not normalised)
+  * @param corners        3 `v` numbers a triangle
+  * @param textureCorners 3 `vt` numbers a triangle, or empty
+  * @param normalCorners  3 `vn` numbers a triangle, or empty
+  * @param skippedKinds   the kinds of statement skipped, in the order first met
+  */
+final case class ObjMesh(
+    vertices: IArray[Double],
+    texture: IArray[Double],
+    normals: IArray[Double],
+    corners: IArray[Int],
+    textureCorners: IArray[Int],
+    normalCorners: IArray[Int],
+    skippedKinds: List[String]
+):
+  /** The number of triangles. */
+  def faceCount: Int = corners.length / 3
+
+  /** Vertex `i` as a point. */
+  def vertex(i: Int): Vec3 = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
+
+  /** Triangle `k` with its corners' points, texture coordinates and normals. */
+  def triangle(k: Int): ObjTriangle =
+    def uv(j: Int) =
+      val at = 2 * textureCorners(3 * k + j)
+      SurfaceCoordinates(texture(at), texture(at + 1))
+    def normal(j: Int) =
+      val at = 3 * normalCorners(3 * k + j)
+      Vec3(normals(at), normals(at + 1), normals(at + 2))
+    val (a, b, c) = (corners(3 * k), corners(3 * k + 1), corners(3 * k + 2))
+    ObjTriangle(
+      vertex(a),
+      vertex(b),
+      vertex(c),
+      Option.when(textureCorners.nonEmpty && textureCorners(3 * k) >= 0)((uv(0), uv(1), uv(2))),
+      Option.when(normalCorners.nonEmpty && normalCorners(3 * k) >= 0)(
+        (normal(0), normal(1), normal(2))
+      ),
+      (a, b, c)
+    )
+
+  /** Every triangle, as [[triangle]] gives it (for tests and tools; the mesh reader reads the
+    * arrays).
+    */
+  def triangles: Vector[ObjTriangle] = Vector.tabulate(faceCount)(triangle)
 
 /** Reads Wavefront OBJ files as scene-format.md's `mesh` element describes: `v`, `vt`, `vn` and
   * `f` in all four vertex forms, negative indices, polygons as fans; the grouping and material
@@ -51,13 +102,20 @@ object ObjReader:
 /** One pass over an OBJ file; its growing tables never leave it. */
 private final class ObjParser(reader: BufferedReader, name: String):
   // Perf: each line scanned in place: its words found as index ranges (no substring per word),
-  // numbers read from the line's characters (Decimal.parse) and indices parsed by hand; one Vec3
-  // per vertex, shared by the faces that use it (docs/performance.md, round 4).
-  private val vertices     = mutable.ArrayBuffer.empty[Vec3]
+  // numbers read from the line's characters (Decimal.parse) and indices parsed by hand; the
+  // vertices and faces in growable arrays of unboxed numbers, no object per vertex or face
+  // (docs/performance.md, rounds 4 and 6).
+  private val vertices     = DoubleBuffer()
+  private var vertexCount  = 0
   private val texture      = DoubleBuffer()
   private var textureCount = 0
-  private val normals      = mutable.ArrayBuffer.empty[Vec3]
-  private val triangles    = Vector.newBuilder[ObjTriangle]
+  private val normals      = DoubleBuffer()
+  private var normalCount  = 0
+  private val faceV        = IntBuffer()
+  private val faceT        = IntBuffer()
+  private val faceN        = IntBuffer()
+  private var anyTextured  = false
+  private var anyNormed    = false
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
   // Perf: the current line and its words: word k is line(starts(k) until ends(k)); the arrays
@@ -83,7 +141,17 @@ private final class ObjParser(reader: BufferedReader, name: String):
         split()
         statement()
         next = reader.readLine()
-      Right(ObjMesh(triangles.result(), skipped.toList))
+      Right(
+        ObjMesh(
+          vertices.result(),
+          texture.result(),
+          normals.result(),
+          faceV.result(),
+          if anyTextured then faceT.result() else IArray.empty[Int],
+          if anyNormed then faceN.result() else IArray.empty[Int],
+          skipped.toList
+        )
+      )
     catch case ObjParser.Malformed(message) => Left(message)
 
   private def word(k: Int): String = line.substring(starts(k), ends(k))
@@ -96,7 +164,8 @@ private final class ObjParser(reader: BufferedReader, name: String):
     if count > 0 then
       if is(0, "v") then
         if count < 4 then fail("a vertex needs x, y and z")
-        vertices += Vec3(number(1), number(2), number(3))
+        vertices += number(1); vertices += number(2); vertices += number(3)
+        vertexCount += 1
       else if is(0, "f") then face()
       else if is(0, "vt") then
         if count < 2 then fail("a texture coordinate needs u")
@@ -105,7 +174,8 @@ private final class ObjParser(reader: BufferedReader, name: String):
         textureCount += 1
       else if is(0, "vn") then
         if count < 4 then fail("a normal needs x, y and z")
-        normals += Vec3(number(1), number(2), number(3))
+        normals += number(1); normals += number(2); normals += number(3)
+        normalCount += 1
       else
         val kind = word(0)
         if !ObjReader.Ignored(kind) then skipped += kind
@@ -138,12 +208,12 @@ private final class ObjParser(reader: BufferedReader, name: String):
       i += 1
     if slashes > 2 || slash1 == from then
       fail(s"malformed face vertex '${line.substring(from, to)}'")
-    cornerV(k) = index(from, slash1, vertices.length, "vertex")
+    cornerV(k) = index(from, slash1, vertexCount, "vertex")
     cornerT(k) =
       if slash1 + 1 < slash2 then index(slash1 + 1, slash2, textureCount, "texture coordinate")
       else -1
     cornerN(k) =
-      if slash2 + 1 < to then index(slash2 + 1, to, normals.length, "normal")
+      if slash2 + 1 < to then index(slash2 + 1, to, normalCount, "normal")
       else -1
 
   /** The triangles (v0, vi, vi+1) of a polygon of `corners` corners. */
@@ -156,22 +226,20 @@ private final class ObjParser(reader: BufferedReader, name: String):
       textured &&= cornerT(k) >= 0
       normed &&= cornerN(k) >= 0
       k += 1
+    anyTextured ||= textured
+    anyNormed ||= normed
     k = 1
     while k < corners - 1 do
-      val uv = Option.when(textured)((uvAt(cornerT(0)), uvAt(cornerT(k)), uvAt(cornerT(k + 1))))
-      val ns =
-        Option.when(normed)((normals(cornerN(0)), normals(cornerN(k)), normals(cornerN(k + 1))))
-      triangles += ObjTriangle(
-        vertices(cornerV(0)),
-        vertices(cornerV(k)),
-        vertices(cornerV(k + 1)),
-        uv,
-        ns,
-        (cornerV(0), cornerV(k), cornerV(k + 1))
-      )
+      faceV += cornerV(0); faceV += cornerV(k); faceV += cornerV(k + 1)
+      if textured then
+        faceT += cornerT(0); faceT += cornerT(k); faceT += cornerT(k + 1)
+      else
+        faceT += -1; faceT += -1; faceT += -1
+      if normed then
+        faceN += cornerN(0); faceN += cornerN(k); faceN += cornerN(k + 1)
+      else
+        faceN += -1; faceN += -1; faceN += -1
       k += 1
-
-  private def uvAt(i: Int) = SurfaceCoordinates(texture(2 * i), texture(2 * i + 1))
 
   /** The 1-based or negative OBJ index at line(from until to), as a 0-based index below `defined`. */
   private def index(from: Int, to: Int, defined: Int, what: String): Int =
@@ -237,6 +305,24 @@ private final class DoubleBuffer:
 
   /** The element at `i`. */
   def apply(i: Int): Double = data(i)
+
+  /** The elements appended so far, in order. */
+  def result(): IArray[Double] = IArray.unsafeFromArray(java.util.Arrays.copyOf(data, size))
+
+/** A growable array of unboxed ints. */
+private final class IntBuffer:
+  // Perf: unboxed storage, grown by doubling, as DoubleBuffer.
+  private var data = new Array[Int](1024)
+  private var size = 0
+
+  /** Appends `i`. */
+  def +=(i: Int): Unit =
+    if size == data.length then data = java.util.Arrays.copyOf(data, 2 * size)
+    data(size) = i
+    size += 1
+
+  /** The elements appended so far, in order. */
+  def result(): IArray[Int] = IArray.unsafeFromArray(java.util.Arrays.copyOf(data, size))
 
 private object ObjParser:
   /** The parser's internal signal; it never escapes [[ObjParser.run]]. */

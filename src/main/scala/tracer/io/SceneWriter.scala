@@ -43,6 +43,7 @@ object SceneWriter:
   /** The primitive shapes inside `s`. */
   private def leaves(s: Shape): Iterator[Shape] = s match
     case c: Csg    => c.children.iterator.flatMap(leaves)
+    case m: Mesh   => m.faces
     case p: Placed => leaves(p.shape)
     case other     => Iterator(other)
 
@@ -130,6 +131,13 @@ object SceneWriter:
       case t: Triangle =>
         s"<triangle>${vector("corner", t.t0)}${vector("corner", t.t1)}${vector("corner", t.t2)}" +
           s"${element(Some(o.surfaceOf(leaf)))}</triangle>"
+      case m: Mesh =>
+        // A flat mesh without texture coordinates (unwritable saw to it): its faces as triangles,
+        // the same picture (a tie between faces goes to the first, as between the triangles).
+        Iterator
+          .range(0, m.faceCount)
+          .map(f => shape(m.face(f), o, leaf + f, placement, enclosing, look))
+          .mkString("\n  ")
       case b: Box =>
         s"<box$scale>${vector("corner1", b.corner1)}${vector("corner2", b.corner2)}" +
           s"${element(Some(o.surfaceOf(leaf)))}</box>"

@@ -1,6 +1,6 @@
 package tracer.io
 
-import tracer.geometry.{Box, Cone, Cylinder, Placed, Plane, Shape, Sphere, Torus, Triangle}
+import tracer.geometry.{Box, Cone, Cylinder, Mesh, Placed, Plane, Shape, Sphere, Torus, Triangle}
 import tracer.math.{Placement, Vec3}
 import tracer.scene.Surface
 
@@ -123,11 +123,11 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
     yield piece
 
   /** A `<mesh>`: the OBJ file's triangles scaled, rotated (x, then y, then z) and translated,
-    * with the mesh's surface. With `smooth="true"`, faces whose corners all have normals shade
-    * with them interpolated; with `smooth="auto"`, faces without them get computed ones
-    * ([[VertexNormals]]).
+    * with the mesh's surface, as one [[Mesh]] (`None` when no face is left: every one collinear).
+    * With `smooth="true"`, faces whose corners all have normals shade with them interpolated;
+    * with `smooth="auto"`, faces without them get computed ones ([[VertexNormals]]).
     */
-  def mesh(e: Element, at: Enclosure): Result[(Vector[Triangle], Surface)] =
+  def mesh(e: Element, at: Enclosure): Result[(Option[Mesh], Surface)] =
     for
       children <- contents(e, Vocabulary.MeshAttributes, Vocabulary.MeshChildren)
       file     <- e.attribute("file").filter(_.nonEmpty).toRight(e.error("missing attribute file"))
@@ -149,40 +149,16 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
         )
       )
       obj <- sources.mesh(file).left.map(why => e.error(s"cannot read mesh file: $why"))
-      _   <- check(obj.triangles.nonEmpty, e, s"mesh file $file has no faces")
+      _   <- check(obj.faceCount > 0, e, s"mesh file $file has no faces")
     yield
-      val place    = MeshTransform(scale, rotate, translate)
-      val computed = if smooth == Smooth.Auto then VertexNormals.of(obj.triangles) else Map.empty
-      // The corners' normals as the file gives them or, under auto, as computed where it gives none.
-      def supplied(t: ObjTriangle): Option[(Vec3, Vec3, Vec3)] = smooth match
-        case Smooth.Off      => None
-        case Smooth.FromFile => t.normals
-        case Smooth.Auto     =>
-          t.normals.orElse {
-            val (i, j, k) = t.vertices
-            for
-              a <- computed.getOrElse(i, None)
-              b <- computed.getOrElse(j, None)
-              c <- computed.getOrElse(k, None)
-            yield (a, b, c)
-          }
-      // Normals turn with the mesh; a face with a zero normal at a corner stays flat.
-      def normals(t: ObjTriangle): Option[(Vec3, Vec3, Vec3)] =
-        for
-          (n0, n1, n2) <- supplied(t)
-          a            <- place.turn(n0).normalised
-          b            <- place.turn(n1).normalised
-          c            <- place.turn(n2).normalised
-        yield (a, b, c)
-      val placed              = obj.triangles.map(t => (place(t.a), place(t.b), place(t.c), t))
-      val (proper, collinear) = placed.partition((a, b, c, _) => Triangle.isProper(a, b, c))
+      val mesh      = MeshBuilder(obj, MeshTransform(scale, rotate, translate), smooth).build()
+      val collinear = obj.faceCount - mesh.fold(0)(_.faceCount)
       if obj.skippedKinds.nonEmpty then
         sources.warn(s"$file: skipped unsupported statements: ${obj.skippedKinds.mkString(", ")}")
-      if collinear.nonEmpty then
-        val faces = if collinear.length == 1 then "face" else "faces"
-        sources.warn(s"$file: skipped ${collinear.length} $faces whose corners are collinear")
-      val surface = own.orElse(at.surface).getOrElse(Surface())
-      (proper.map((a, b, c, t) => Triangle(a, b, c, t.uv, normals(t))), surface)
+      if collinear > 0 then
+        val faces = if collinear == 1 then "face" else "faces"
+        sources.warn(s"$file: skipped $collinear $faces whose corners are collinear")
+      (mesh, own.orElse(at.surface).getOrElse(Surface()))
 
   /** A `<box>` (version 3). */
   def box(e: Element, at: Enclosure): Result[Piece] =

@@ -1,5 +1,6 @@
 package tracer.render
 
+import scala.concurrent.ExecutionContext
 import tracer.geometry.Shape
 
 /** A bounding volume hierarchy over the bounded shapes of a scene, built once with the binned
@@ -10,12 +11,14 @@ import tracer.geometry.Shape
   * (a [[Query]] per render task), so that tracing a ray allocates nothing.
   *
   * @param shapes the shapes it indexes; those without bounds (planes) are left out
+  * @param pool   where to build it and its meshes' trees: the render's threads, or the calling
+  *   thread for `None`
   */
-final class Bvh(shapes: IndexedSeq[Shape]):
-  private val tree  = BvhBuilder(shapes).build()
+final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None):
+  private val tree  = BvhBuilder(shapes).build(pool)
   private val boxes = tree.boxes
   private val links = tree.links
-  private val prims = Primitives(shapes, tree.order)
+  private val prims = Primitives(shapes, tree.order, pool)
   private val wide  = WideTree.collapse(tree)
   private val wb    = wide.boxes
   private val wc    = wide.child
@@ -39,7 +42,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
   /** The index in `shapes` of the shape the ray from (ox, oy, oz) in unit direction (dx, dy, dz)
     * hits first, competing with a candidate already found: shape `limitIndex` at distance `limit`
     * (use `Int.MaxValue` and +∞ for none). Ties go to the lower index, as in a plain loop over all
-    * shapes. The winner's distance is left in `query.distance`.
+    * shapes. The winner's distance is left in `query.distance`, and when it is a mesh, the face
+    * hit in `query.face`.
     */
   def nearest(
       ox: Double,
@@ -60,6 +64,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     val entries = query.entries
     var best    = limitIndex
     var bestT   = limit
+    // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
+    var face = -1
     walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var sp =
         if wide.size == 0 then 0
@@ -74,12 +80,13 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             var k   = wc(slot)
             val end = k + count
             while k < end do
-              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
               if t <= bestT && t < Double.PositiveInfinity then
                 val i = prims.index(k)
                 if t < bestT || i < best then
                   bestT = t
                   best = i
+                  face = query.meshFace
               k += 1
           else
             sp = push(
@@ -101,6 +108,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             )
     }
     query.distance = bestT
+    query.face = face
     best
 
   /** True when some indexed shape is hit by the ray (origin o, unit direction d) at a distance
@@ -132,8 +140,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
           var k   = wc(slot)
           val end = k + count
           while k < end && !hit do
-            hit =
-              Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz, query.crossings) < limit
+            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
             k += 1
         else
           sp = push(
@@ -251,6 +258,8 @@ final class Bvh(shapes: IndexedSeq[Shape]):
     val entries = query.entries
     var best    = limitIndex
     var bestT   = limit
+    // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
+    var face = -1
     walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var sp = 0
       val t0 =
@@ -268,12 +277,13 @@ final class Bvh(shapes: IndexedSeq[Shape]):
             var k   = links(2 * node)
             val end = k + count
             while k < end do
-              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
               if t <= bestT && t < Double.PositiveInfinity then
                 val i = prims.index(k)
                 if t < bestT || i < best then
                   bestT = t
                   best = i
+                  face = query.meshFace
               k += 1
           else
             val left = links(2 * node)
@@ -292,6 +302,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
                 stack(sp) = left + 1; entries(sp) = tr; sp += 1
     }
     query.distance = bestT
+    query.face = face
     best
 
   /** [[occluded]] on the binary tree, as [[nearestBinary]]. */
@@ -334,8 +345,7 @@ final class Bvh(shapes: IndexedSeq[Shape]):
           var k   = links(2 * node)
           val end = k + count
           while k < end && !hit do
-            hit =
-              Primitives.distance(prims, k, limit, ox, oy, oz, dx, dy, dz, query.crossings) < limit
+            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
             k += 1
         else
           val left = links(2 * node)
@@ -419,6 +429,20 @@ object Bvh:
 final class Query:
   private[render] val nodes   = new Array[Int](Bvh.StackSize)
   private[render] val entries = new Array[Double](Bvh.StackSize)
+
+  /** The stack of a walk down a mesh's own tree ([[MeshTree]]), taken while a walk down the
+    * scene's tree uses [[nodes]].
+    */
+  private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
+  private[render] val meshEntries = new Array[Double](Bvh.StackSize)
+
+  /** The face the last mesh test met first ([[MeshTree.nearest]]). */
+  // Why: the second result of a mesh's test, written instead of allocating a pair per test.
+  private[render] var meshFace: Int = -1
+
+  /** When the last nearest hit found is on a mesh, the face it is on (see [[World.hitAt]]). */
+  // Why: as meshFace, the third result of `nearest`.
+  var face: Int = -1
 
   /** Scratch for the general route's crossings (the solids' and combinations' kernel). */
   private[render] val crossings = tracer.geometry.CrossingBuffer()

@@ -1,13 +1,15 @@
 package tracer.render
 
-import tracer.geometry.Shape
+import scala.concurrent.duration.Duration
+import scala.concurrent.{Await, ExecutionContext, Future}
+import tracer.geometry.{Mesh, Shape}
 
 /** A built hierarchy of `size` nodes as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
   * high x, y, z), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
   * one follows it) and 0, for a leaf the first of its primitives and their count (≥ 1).
   * `order` lists the indexed shapes' indices in leaf order; `unbounded` the indices, in order,
   * of the shapes left out for having no bounds (planes), which the builder found as it asked
-  * every shape for its bounds (so `World` need not ask again).
+  * every shape for its bounds (so `World` need not ask again; none for a mesh's faces).
   */
 private[render] final class Tree(
     val size: Int,
@@ -17,69 +19,74 @@ private[render] final class Tree(
     val unbounded: Array[Int]
 )
 
-/** Top-down binned-SAH construction (Wald 2007) of a [[Tree]] over the shapes that have
-  * [[tracer.geometry.Bounds]].
+/** Top-down binned-SAH construction (Wald 2007) of a [[Tree]] over primitives given by their
+  * boxes: the shapes that have [[tracer.geometry.Bounds]] ([[BvhBuilder.apply]]) or the faces of
+  * a mesh ([[BvhBuilder.faces]]).
   *
   * Perf: primitive arrays and while loops throughout; the arrays it fills become the immutable
   * tree. The first version used Scala collections and took 0.5 s (cold) for 20,000 triangles;
-  * this one takes about a tenth of that (docs/performance.md, step 4).
+  * this one takes about a tenth of that (docs/performance.md, step 4). Every subtree owns a range
+  * of node numbers fixed by its number of primitives alone (a subtree of n primitives makes at
+  * most 2n − 1 nodes), so subtrees can be built at once on different threads ([[build]] with a
+  * pool) and the tree is the same, node for node, however they are scheduled.
+  *
+  * @param boxLo  each primitive's padded low corner at 3k..3k+2, moved with it by the partitions
+  * @param boxHi  its high corner, likewise
+  * @param centre its box's centre, likewise
+  * @param prims  the primitives' numbers, reordered into leaf order
+  * @param without the shapes left out for having no bounds, in order (see [[Tree.unbounded]])
   */
-private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
+private[render] final class BvhBuilder private (
+    boxLo: Array[Double],
+    boxHi: Array[Double],
+    centre: Array[Double],
+    prims: Array[Int],
+    without: Array[Int]
+):
   import BvhBuilder.*
 
-  // Each primitive's box (padded so flat boxes, like a triangle in a plane, have depth) and
-  // centroid, at its position in `prims` (3k..3k+2), moved with it by the partitions.
-  // Perf: so every pass of a split reads memory in order; indexed by shape they were read at
-  // random, and a million-triangle build waited on the cache (docs/performance.md, round 4).
-  private val boxLo  = new Array[Double](3 * shapes.length)
-  private val boxHi  = new Array[Double](3 * shapes.length)
-  private val centre = new Array[Double](3 * shapes.length)
-  // The shapes without bounds are collected on the same pass: Shape.bounds is asked once a shape.
-  private val without = Array.newBuilder[Int]
-  // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
-  // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
-  private val prims =
-    val found = Array.newBuilder[Int]
-    var i     = 0
-    var k     = 0
-    while i < shapes.length do
-      Shape.bounds(shapes(i)) match
-        case Some(b) =>
-          found += i
-          setBox(k, 0, b.lo.x, b.hi.x)
-          setBox(k, 1, b.lo.y, b.hi.y)
-          setBox(k, 2, b.lo.z, b.hi.z)
-          k += 1
-        case None => without += i
-      i += 1
-    found.result()
-
   // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
-  private var size  = 0
-  private val boxes = new Array[Double](6 * Math.max(1, 2 * prims.length - 1))
-  private val links = new Array[Int](2 * Math.max(1, 2 * prims.length - 1))
+  private val capacity = Math.max(1, 2 * prims.length - 1)
+  private val boxes    = new Array[Double](6 * capacity)
+  private val links    = new Array[Int](2 * capacity)
 
-  // Scratch space for one split: per-bin counts and boxes, and the sweeps' results.
-  private val binCount = new Array[Int](Bins)
-  private val binLo    = new Array[Double](3 * Bins)
-  private val binHi    = new Array[Double](3 * Bins)
-  private val leftCost = new Array[Double](Bins)
-  private val box      = new Array[Double](6)
-
-  /** Builds the tree. Its arrays may be longer than its nodes (`Tree.size` says how many). */
-  def build(): Tree =
-    if prims.nonEmpty then split(newNode(), 0, prims.length, 0)
-    Tree(size, boxes, links, prims, without.result())
-
-  private def setBox(i: Int, axis: Int, low: Double, high: Double): Unit =
-    val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
-    boxLo(3 * i + axis) = low - pad
-    boxHi(3 * i + axis) = high + pad
-    centre(3 * i + axis) = (low + high) / 2
-
-  private def newNode(): Int =
-    size += 1
-    size - 1
+  /** Builds the tree, on `pool` when one is given (the render's threads; the top levels on this
+    * thread, then the subtrees below them as tasks) and on this thread alone otherwise. Its
+    * arrays may be longer than its nodes (`Tree.size` says how many are used; unused numbers are
+    * never linked).
+    */
+  def build(pool: Option[ExecutionContext] = None): Tree =
+    if prims.isEmpty then Tree(0, boxes, links, prims, without)
+    else
+      pool match
+        case Some(context) if prims.length >= ParallelFrom =>
+          val tasks = Vector.newBuilder[Task]
+          val top   = split(0, 0, prims.length, 0, 1, Scratch(), prims.length / Tasks, tasks)
+          given ExecutionContext = context
+          val below              = Future.traverse(tasks.result()) { task =>
+            Future(
+              split(
+                task.node,
+                task.start,
+                task.end,
+                task.depth,
+                task.free,
+                Scratch(),
+                0,
+                Vector.newBuilder,
+                task.known
+              )
+            )
+          }
+          Tree(top + Await.result(below, Duration.Inf).sum, boxes, links, prims, without)
+        case _ =>
+          Tree(
+            split(0, 0, prims.length, 0, 1, Scratch(), 0, Vector.newBuilder),
+            boxes,
+            links,
+            prims,
+            without
+          )
 
   /** The surface area of the box with low corner b(l..l+2) and high corner b(h..h+2). */
   private def area(b: Array[Double], l: Int, h: Int): Double =
@@ -88,15 +95,53 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
     val dz = b(h + 2) - b(l + 2)
     if dx < 0 then 0 else 2 * (dx * dy + dy * dz + dz * dx)
 
-  /** Fills node `node` with prims(start until end), splitting it while that pays. */
-  private def split(node: Int, start: Int, end: Int, depth: Int): Unit =
-    // The node's box, and the box of the primitives' centroids.
+  /** Fills node `node` with prims(start until end), splitting it while that pays; its children
+    * are numbered from `free` on (the subtree's own range: 2(end − start) − 2 numbers). A node
+    * of at most `grain` primitives (and more than 0) is not built but handed to `tasks`, to be
+    * built by [[build]]'s pool. Returns the number of nodes made, `node` included.
+    */
+  private def split(
+      node: Int,
+      start: Int,
+      end: Int,
+      depth: Int,
+      free: Int,
+      s: Scratch,
+      grain: Int,
+      tasks: scala.collection.mutable.Builder[Task, Vector[Task]],
+      known: Known = Known.None
+  ): Int =
+    val n = end - start
+    if n <= grain && node > 0 then
+      tasks += Task(node, start, end, depth, free, known)
+      0
+    else divide(node, start, end, depth, free, s, grain, tasks, known)
+
+  private def divide(
+      node: Int,
+      start: Int,
+      end: Int,
+      depth: Int,
+      free: Int,
+      s: Scratch,
+      grain: Int,
+      tasks: scala.collection.mutable.Builder[Task, Vector[Task]],
+      known: Known
+  ): Int =
+    // The node's box, and the box of the primitives' centroids: from the parent's bins when it
+    // had them (Perf: a pass over the primitives saved at every level), else from the primitives.
+    // Why: the centroids' box, narrowed below.
     var cl0, cl1, cl2 = Double.PositiveInfinity
+    // Why: as cl0.
     var ch0, ch1, ch2 = Double.NegativeInfinity
     val nb            = 6 * node
-    for a <- 0 until 3 do
-      boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
-    var k = start
+    if known.found then
+      cl0 = known.lo0; cl1 = known.lo1; cl2 = known.lo2
+      ch0 = known.hi0; ch1 = known.hi1; ch2 = known.hi2
+    else
+      for a <- 0 until 3 do
+        boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
+    var k = if known.found then end else start
     while k < end do
       var a = 0
       while a < 3 do
@@ -114,16 +159,24 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
       if ch0 - cl0 >= ch1 - cl1 && ch0 - cl0 >= ch2 - cl2 then (0, cl0, ch0 - cl0)
       else if ch1 - cl1 >= ch2 - cl2 then (1, cl1, ch1 - cl1)
       else (2, cl2, ch2 - cl2)
-    def leaf(): Unit =
+    def leaf(): Int =
       links(2 * node) = start; links(2 * node + 1) = n
+      1
     if n <= MaxLeaf / 2 || extent <= 0 || depth >= MaxDepth then leaf()
     else
       def bin(k: Int): Int =
         Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
+      val binCount = s.binCount
+      val binLo    = s.binLo
+      val binHi    = s.binHi
       // Bin the primitives along the axis.
+      val binCLo = s.binCLo
+      val binCHi = s.binCHi
       java.util.Arrays.fill(binCount, 0)
       java.util.Arrays.fill(binLo, Double.PositiveInfinity)
       java.util.Arrays.fill(binHi, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCLo, Double.PositiveInfinity)
+      java.util.Arrays.fill(binCHi, Double.NegativeInfinity)
       k = start
       while k < end do
         val b = bin(k)
@@ -132,31 +185,33 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
         while a < 3 do
           binLo(3 * b + a) = binLo(3 * b + a) min boxLo(3 * k + a)
           binHi(3 * b + a) = binHi(3 * b + a) max boxHi(3 * k + a)
+          binCLo(3 * b + a) = binCLo(3 * b + a) min centre(3 * k + a)
+          binCHi(3 * b + a) = binCHi(3 * b + a) max centre(3 * k + a)
           a += 1
         k += 1
       // Sweep from the left: leftCost(s) = count · area of bins 0..s.
-      sweepStart()
-      var c = 0
-      var s = 0
-      while s < Bins - 1 do
-        c += binCount(s)
-        grow(s)
-        leftCost(s) = c * area(box, 0, 3)
-        s += 1
+      s.sweepStart()
+      var c    = 0
+      var step = 0
+      while step < Bins - 1 do
+        c += binCount(step)
+        s.grow(step)
+        s.leftCost(step) = c * area(s.box, 0, 3)
+        step += 1
       // Sweep from the right, keeping the cheapest split.
-      sweepStart()
+      s.sweepStart()
       c = 0
       var best     = 0
       var bestCost = Double.PositiveInfinity
-      s = Bins - 1
-      while s > 0 do
-        c += binCount(s)
-        grow(s)
-        val cost = leftCost(s - 1) + c * area(box, 0, 3)
+      step = Bins - 1
+      while step > 0 do
+        c += binCount(step)
+        s.grow(step)
+        val cost = s.leftCost(step - 1) + c * area(s.box, 0, 3)
         if cost < bestCost then
           bestCost = cost
-          best = s - 1
-        s -= 1
+          best = step - 1
+        step -= 1
       if n <= MaxLeaf && bestCost >= n * area(boxes, nb, nb + 3) then leaf()
       else
         // Partition in place: bins 0..best to the left.
@@ -167,12 +222,29 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
           else
             swap(i, j)
             j -= 1
-        val mid  = if i == start || i == end then (start + end) / 2 else i
-        val left = newNode()
-        val _    = newNode() // the right child, at left + 1
+        val binned = i != start && i != end
+        val mid    = if binned then i else (start + end) / 2
+        val left   = free // the right child at left + 1; then the left subtree's range, the right's
         links(2 * node) = left; links(2 * node + 1) = 0
-        split(left, start, mid, depth + 1)
-        split(left + 1, mid, end, depth + 1)
+        // Split by the bins, each child's box and centroids' box are its bins' (min and max are
+        // exact, so the same as from its primitives); a median split finds them itself.
+        // Both before the left subtree is built: it reuses the scratch bins.
+        val leftKnown  = s.side(binned, 0, best, 6 * left, boxes)
+        val rightKnown = s.side(binned, best + 1, Bins - 1, 6 * (left + 1), boxes)
+        val l          = split(left, start, mid, depth + 1, free + 2, s, grain, tasks, leftKnown)
+        val r          =
+          split(
+            left + 1,
+            mid,
+            end,
+            depth + 1,
+            free + 2 * (mid - start),
+            s,
+            grain,
+            tasks,
+            rightKnown
+          )
+        1 + l + r
 
   /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
   private def swap(i: Int, j: Int): Unit =
@@ -187,19 +259,158 @@ private[render] final class BvhBuilder(shapes: IndexedSeq[Shape]):
   private def exchange(xs: Array[Double], i: Int, j: Int): Unit =
     val x = xs(i); xs(i) = xs(j); xs(j) = x
 
-  private def sweepStart(): Unit =
-    java.util.Arrays.fill(box, 0, 3, Double.PositiveInfinity)
-    java.util.Arrays.fill(box, 3, 6, Double.NegativeInfinity)
-
-  private def grow(b: Int): Unit =
-    var a = 0
-    while a < 3 do
-      box(a) = box(a) min binLo(3 * b + a)
-      box(3 + a) = box(3 + a) max binHi(3 * b + a)
-      a += 1
-
-/** Construction constants of [[BvhBuilder]]. */
+/** Construction constants of [[BvhBuilder]], and its two sources of primitives. */
 private[render] object BvhBuilder:
+  /** The builder over the shapes of `shapes` that have bounds (the others are left out). */
+  def apply(shapes: IndexedSeq[Shape]): BvhBuilder =
+    // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
+    // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
+    val boxLo  = new Array[Double](3 * shapes.length)
+    val boxHi  = new Array[Double](3 * shapes.length)
+    val centre = new Array[Double](3 * shapes.length)
+    val found  = Array.newBuilder[Int]
+    // The shapes without bounds are collected on the same pass: Shape.bounds is asked once a shape.
+    val without = Array.newBuilder[Int]
+    var i      = 0
+    var k      = 0
+    while i < shapes.length do
+      Shape.bounds(shapes(i)) match
+        case Some(b) =>
+          found += i
+          setBox(boxLo, boxHi, centre, k, 0, b.lo.x, b.hi.x)
+          setBox(boxLo, boxHi, centre, k, 1, b.lo.y, b.hi.y)
+          setBox(boxLo, boxHi, centre, k, 2, b.lo.z, b.hi.z)
+          k += 1
+        case None => without += i
+      i += 1
+    new BvhBuilder(boxLo, boxHi, centre, found.result(), without.result())
+
+  /** The builder over the faces of `mesh`, each boxed by its three corners. */
+  def faces(mesh: Mesh): BvhBuilder =
+    val n      = mesh.faceCount
+    val boxLo  = new Array[Double](3 * n)
+    val boxHi  = new Array[Double](3 * n)
+    val centre = new Array[Double](3 * n)
+    val v      = mesh.vertices
+    val c      = mesh.corners
+    // Perf: one pass over the faces on the mesh's arrays, no Bounds or Triangle per face.
+    var f = 0
+    while f < n do
+      val i0 = 3 * c(3 * f); val i1 = 3 * c(3 * f + 1); val i2 = 3 * c(3 * f + 2)
+      var a  = 0
+      while a < 3 do
+        val x0 = v(i0 + a); val x1 = v(i1 + a); val x2 = v(i2 + a)
+        setBox(
+          boxLo,
+          boxHi,
+          centre,
+          f,
+          a,
+          Math.min(Math.min(x0, x1), x2),
+          Math.max(Math.max(x0, x1), x2)
+        )
+        a += 1
+      f += 1
+    new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
+
+  /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth. */
+  private def setBox(
+      boxLo: Array[Double],
+      boxHi: Array[Double],
+      centre: Array[Double],
+      k: Int,
+      axis: Int,
+      low: Double,
+      high: Double
+  ): Unit =
+    val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
+    boxLo(3 * k + axis) = low - pad
+    boxHi(3 * k + axis) = high + pad
+    centre(3 * k + axis) = (low + high) / 2
+
+  /** A subtree left for the pool: its node, primitives, depth, first free node number and what
+    * its parent's bins told of it.
+    */
+  private final case class Task(
+      node: Int,
+      start: Int,
+      end: Int,
+      depth: Int,
+      free: Int,
+      known: Known
+  )
+
+  /** A node's centroids' box from its parent's bins (its own box then written already), when
+    * `found`.
+    */
+  private final case class Known(
+      found: Boolean,
+      lo0: Double,
+      lo1: Double,
+      lo2: Double,
+      hi0: Double,
+      hi1: Double,
+      hi2: Double
+  )
+
+  private object Known:
+    /** Nothing known: the node finds its boxes from its primitives. */
+    val None: Known = Known(false, 0, 0, 0, 0, 0, 0)
+
+  /** One thread's scratch space for a split: per-bin counts and boxes, and the sweeps' results. */
+  private final class Scratch:
+    val binCount = new Array[Int](Bins)
+    val binLo    = new Array[Double](3 * Bins)
+    val binHi    = new Array[Double](3 * Bins)
+    val leftCost = new Array[Double](Bins)
+    val box      = new Array[Double](6)
+    val binCLo   = new Array[Double](3 * Bins)
+    val binCHi   = new Array[Double](3 * Bins)
+
+    /** When `binned`: writes the box of bins `from` to `to` into `boxes` at `at` and returns
+      * their centroids' box; else [[Known.None]].
+      */
+    def side(binned: Boolean, from: Int, to: Int, at: Int, boxes: Array[Double]): Known =
+      if !binned then Known.None
+      else
+        // Why: the bins' boxes gathered in a counted loop.
+        var l0, l1, l2, c0, c1, c2 = Double.PositiveInfinity
+        // Why: as l0.
+        var h0, h1, h2, d0, d1, d2 = Double.NegativeInfinity
+        var b                      = from
+        while b <= to do
+          l0 = Math.min(l0, binLo(3 * b)); l1 = Math.min(l1, binLo(3 * b + 1))
+          l2 = Math.min(l2, binLo(3 * b + 2))
+          h0 = Math.max(h0, binHi(3 * b)); h1 = Math.max(h1, binHi(3 * b + 1))
+          h2 = Math.max(h2, binHi(3 * b + 2))
+          c0 = Math.min(c0, binCLo(3 * b)); c1 = Math.min(c1, binCLo(3 * b + 1))
+          c2 = Math.min(c2, binCLo(3 * b + 2))
+          d0 = Math.max(d0, binCHi(3 * b)); d1 = Math.max(d1, binCHi(3 * b + 1))
+          d2 = Math.max(d2, binCHi(3 * b + 2))
+          b += 1
+        boxes(at) = l0; boxes(at + 1) = l1; boxes(at + 2) = l2
+        boxes(at + 3) = h0; boxes(at + 4) = h1; boxes(at + 5) = h2
+        Known(true, c0, c1, c2, d0, d1, d2)
+
+    def sweepStart(): Unit =
+      box(0) = Double.PositiveInfinity; box(1) = Double.PositiveInfinity
+      box(2) = Double.PositiveInfinity; box(3) = Double.NegativeInfinity
+      box(4) = Double.NegativeInfinity; box(5) = Double.NegativeInfinity
+
+    def grow(b: Int): Unit =
+      // Perf: the three axes in a counted loop on the scratch arrays.
+      var a = 0
+      while a < 3 do
+        box(a) = box(a) min binLo(3 * b + a)
+        box(3 + a) = box(3 + a) max binHi(3 * b + a)
+        a += 1
+
+  /** The fewest primitives worth building on a pool. */
+  val ParallelFrom = 65536
+
+  /** Subtrees per build on a pool, at most about: enough to keep the threads evenly busy. */
+  val Tasks = 6
+
   /** The most shapes a leaf holds when splitting would cost more. */
   val MaxLeaf = 4
 

@@ -5,6 +5,7 @@ import tracer.geometry.{
   Cone,
   Csg,
   FirstCrossing,
+  Mesh,
   Placed,
   Plane,
   Shape,
@@ -22,7 +23,8 @@ private[render] object Hits:
 
   /** Writes into `query` (its `px` … `front`) the hit at distance `t` along the ray from
     * (ox, oy, oz) in unit direction (dx, dy, dz) on `shape`: as `Shape.hitAt(shape, ray, t)`
-    * with `Shape.shadingNormal` of it. A `t` at which a general shape has no crossing is a
+    * with `Shape.shadingNormal` of it (for a mesh, `Shape.hitOnFace` on the face the last
+    * nearest query found, `query.face`). A `t` at which a general shape has no crossing is a
     * caller's bug: `IllegalArgumentException`, as from `Shape.hitAt`.
     */
   def record(
@@ -77,6 +79,23 @@ private[render] object Hits:
         tr.cornerNormals match
           case Some((n0, n1, n2)) => smooth(tr, n0, n1, n2, dx, dy, dz, query)
           case None               => flat(query)
+      case m: Mesh =>
+        // Shape.hitOnFace: the face the kernel found (query.face) is the leaf; its plane's Pn is
+        // the outward normal. A smooth face blends its corners' normals as its Triangle does.
+        val f = query.face
+        val n = m.planes
+        facing(ox + dx * t, oy + dy * t, oz + dz * t, n(4 * f), n(4 * f + 1), n(4 * f + 2), f)(
+          dx,
+          dy,
+          dz,
+          query
+        )
+        if m.smoothFace(f) then
+          val tr = m.face(f)
+          tr.cornerNormals match
+            case Some((n0, n1, n2)) => smooth(tr, n0, n1, n2, dx, dy, dz, query)
+            case None               => flat(query)
+        else flat(query)
       case other: (Box | Cone | Torus | Placed | Csg) =>
         // The general route: the nearest crossing again, for its normal and leaf, into the
         // query's own crossing buffer (Shape.hitAt uses the thread's).

@@ -1,11 +1,13 @@
 package tracer.render
 
+import scala.concurrent.ExecutionContext
 import tracer.geometry.{
   Box,
   Cone,
   CrossingBuffer,
   Csg,
   Kernel,
+  Mesh,
   Placed,
   Plane,
   Shape,
@@ -25,6 +27,9 @@ enum Route:
   /** A plane (unbounded: tested on every ray), from its normal and D in flat arrays. */
   case FastPlane
 
+  /** A mesh, tested by its own tree of faces ([[MeshTree]]). */
+  case FastMesh
+
   /** Any other shape, tested with [[tracer.geometry.Shape.distance]]; it joins the hierarchy when
     * [[tracer.geometry.Shape.bounds]] gives it bounds and is tested on every ray otherwise.
     */
@@ -37,6 +42,7 @@ object Route:
     case _: Sphere                              => FastSphere
     case _: Triangle                            => FastTriangle
     case _: Plane                               => FastPlane
+    case _: Mesh                                => FastMesh
     case _: (Box | Cone | Torus | Placed | Csg) => General
 
 /** Shapes as flat primitive arrays (the bounded ones in the hierarchy's leaf order, the unbounded
@@ -46,8 +52,13 @@ object Route:
   *
   * @param shapes all the scene's shapes
   * @param order  the indices in `shapes` of the primitives, in leaf order
+  * @param pool   where to build the meshes' trees (see [[MeshTree]])
   */
-final class Primitives(shapes: IndexedSeq[Shape], order: Array[Int]):
+final class Primitives(
+    shapes: IndexedSeq[Shape],
+    order: Array[Int],
+    pool: Option[ExecutionContext] = None
+):
   // Perf: everything a leaf test reads, contiguous per primitive: no Shape object is reached on
   // the fast paths (docs/performance.md, round 4).
   private[render] val data  = new Array[Double](Primitives.Stride * order.length)
@@ -55,13 +66,22 @@ final class Primitives(shapes: IndexedSeq[Shape], order: Array[Int]):
   private[render] val index = order
   private[render] val all   = shapes
 
-  locally {
+  /** The meshes' trees; a mesh primitive's first double is the number of its tree here. */
+  private[render] val meshes: Array[MeshTree] =
+    val trees = Array.newBuilder[MeshTree]
     // Perf: a plain loop filling the arrays, once per world.
     var k = 0
+    var m = 0
     while k < order.length do
       kind(k) = Primitives.store(shapes(order(k)), data, Primitives.Stride * k).ordinal.toByte
+      shapes(order(k)) match
+        case mesh: Mesh =>
+          trees += MeshTree(mesh, pool)
+          data(Primitives.Stride * k) = m
+          m += 1
+        case _ => ()
       k += 1
-  }
+    trees.result()
 
   /** The number of primitives. */
   def size: Int = order.length
@@ -74,12 +94,14 @@ object Primitives:
   private[render] val SphereKind: Byte   = Route.FastSphere.ordinal.toByte
   private[render] val TriangleKind: Byte = Route.FastTriangle.ordinal.toByte
   private[render] val PlaneKind: Byte    = Route.FastPlane.ordinal.toByte
+  private[render] val MeshKind: Byte     = Route.FastMesh.ordinal.toByte
 
   /** Writes what the leaf test of `shape` reads into `data` from `at`, and returns its route.
     *
     * A sphere: Sc, Sr². A plane: Pn, D. A triangle: Pn, D, T0, a, b, b · b, a · b and the denominator, copied from
-    * the [[tracer.geometry.Triangle]] so the kernel computes with exactly its values. A shape of
-    * the general route stores nothing (its case here is `()`): its test reads the shape itself.
+    * the [[tracer.geometry.Triangle]] so the kernel computes with exactly its values. A mesh and a
+    * shape of the general route store nothing here (their case is `()`): a mesh's test reads its
+    * tree (the [[Primitives]] that hold it number it), the general one the shape itself.
     */
   def store(shape: Shape, data: Array[Double], at: Int): Route =
     val route = Route.of(shape)
@@ -97,14 +119,15 @@ object Primitives:
       case p: Plane =>
         data(at) = p.normal.x; data(at + 1) = p.normal.y; data(at + 2) = p.normal.z
         data(at + 3) = p.distance
-      case _: (Box | Cone | Torus | Placed | Csg) => ()
+      case _: (Mesh | Box | Cone | Torus | Placed | Csg) => ()
     route
 
   /** The distance along the ray (origin o, unit direction d) to primitive `k`, or +∞ on a miss:
     * bit for bit what [[tracer.geometry.Shape.distance]] gives for its shape, the same operations
-    * in the same order on the same values. A triangle or a general shape farther than `cutoff`
-    * may be reported as a miss without finishing its test. The general route takes its scratch
-    * from `buffer`.
+    * in the same order on the same values. A triangle, a mesh's faces or a general shape farther
+    * than `cutoff` may be reported as a miss without finishing its test; a mesh counts hits at t ≤
+    * `cutoff` only, and leaves the face hit in `query.meshFace` ([[MeshTree.nearest]]). The
+    * general route takes its scratch from `query`.
     */
   inline def distance(
       p: Primitives,
@@ -116,13 +139,34 @@ object Primitives:
       dx: Double,
       dy: Double,
       dz: Double,
-      buffer: CrossingBuffer
+      query: Query
   ): Double =
     val kd = p.kind(k)
     if kd == TriangleKind then triangle(p.data, Stride * k, cutoff, ox, oy, oz, dx, dy, dz)
     else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
     else if kd == PlaneKind then plane(p.data, Stride * k, ox, oy, oz, dx, dy, dz)
-    else general(p.all(p.index(k)), cutoff, ox, oy, oz, dx, dy, dz, buffer)
+    else if kd == MeshKind then
+      p.meshes(p.data(Stride * k).toInt).nearest(ox, oy, oz, dx, dy, dz, cutoff, query)
+    else general(p.all(p.index(k)), cutoff, ox, oy, oz, dx, dy, dz, query.crossings)
+
+  /** True when primitive `k` is met by the ray at a t below `limit`: [[distance]] `< limit`,
+    * with a mesh's any-hit test ([[MeshTree.occluded]]) in place of its nearest face.
+    */
+  inline def blocks(
+      p: Primitives,
+      k: Int,
+      limit: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      query: Query
+  ): Boolean =
+    if p.kind(k) == MeshKind then
+      p.meshes(p.data(Stride * k).toInt).occluded(ox, oy, oz, dx, dy, dz, limit, query)
+    else distance(p, k, limit, ox, oy, oz, dx, dy, dz, query) < limit
 
   /** The general route: [[tracer.geometry.Shape.distance]], bit for bit, from the solids' kernel
     * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test; a shape

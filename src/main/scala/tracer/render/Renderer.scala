@@ -56,10 +56,11 @@ object Renderer:
     require(threads >= 1, s"threads must be at least 1, got $threads")
     val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
     require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
-    val write = row(Frame(scene, config))
-    val pool  = Executors.newFixedThreadPool(threads, WorkerThreads)
+    val pool = Executors.newFixedThreadPool(threads, WorkerThreads)
     try
-      given ExecutionContext = ExecutionContext.fromExecutorService(pool)
+      given context: ExecutionContext = ExecutionContext.fromExecutorService(pool)
+      // The world is built on the same threads (a large mesh's tree in parallel).
+      val write = row(Frame(scene, config, Some(context)))
       // A queue of many small row tasks keeps every thread busy however uneven the rows are;
       // each writes its row straight into the picture (no row images to stack afterwards).
       image(config.columns, rows.size) { store =>
@@ -101,9 +102,13 @@ object Renderer:
 
   private object Frame:
     /** The frame of `config`'s integrator. */
-    def apply(scene: Scene, config: CameraConfig): Frame =
+    def apply(
+        scene: Scene,
+        config: CameraConfig,
+        pool: Option[ExecutionContext] = None
+    ): Frame =
       val projection = Projection(scene.camera, config.film)
-      val world      = World(scene)
+      val world      = World(scene, pool)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

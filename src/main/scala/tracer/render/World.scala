@@ -1,19 +1,21 @@
 package tracer.render
 
-import tracer.geometry.{Ray, Shape}
+import scala.concurrent.ExecutionContext
+import tracer.geometry.{Hit, Mesh, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.{Light, Scene, SceneObject, Surface}
 
 /** A scene compiled for tracing: its shapes and surfaces in flat arrays, the bounded shapes in a
   * [[Bvh]] (the ray kernel), the unbounded ones (planes) in a list of their own; each shape tested
   * as its [[Route]] says. Built once per picture from the immutable [[tracer.scene.Scene]] and
-  * never changed after.
+  * never changed after. `pool` (the render's threads) builds the hierarchy of a large mesh in
+  * parallel; without it everything is built on the calling thread, to the same result.
   */
-final class World(scene: Scene):
+final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
-  private val bvh                         = Bvh(shapes.toIndexedSeq)
+  private val bvh                         = Bvh(shapes.toIndexedSeq, pool)
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
 
@@ -92,7 +94,7 @@ final class World(scene: Scene):
     var bestT = limit
     var k     = 0
     while k < unbounded.size do
-      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz, query.crossings)
+      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz, query)
       if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
         bestT = t
         best = unbounded.index(k)
@@ -102,6 +104,14 @@ final class World(scene: Scene):
       query.distance = Double.PositiveInfinity
       -1
     else winner
+
+  /** The hit on shape `i` (the last [[nearest]] or [[nearestAlong]] with `query` found it) along
+    * `ray`, at `query.distance`: [[tracer.geometry.Shape.hitAt]], except that on a mesh the face
+    * is the one the query found (the first at that distance), not looked for again.
+    */
+  def hitAt(i: Int, ray: Ray, query: Query): Hit = shapes(i) match
+    case m: Mesh => Shape.hitOnFace(m, query.face, ray, query.distance)
+    case other   => Shape.hitAt(other, ray, query.distance)
 
   /** True when some shape is hit by `ray` at a t with 0 < t < `limit` (a shadow test). */
   def occluded(ray: Ray, limit: Double, query: Query): Boolean =
@@ -133,7 +143,7 @@ final class World(scene: Scene):
         dx,
         dy,
         dz,
-        query.crossings
+        query
       ) < limit)
     do k += 1
     k < unbounded.size || bvh.occluded(ox, oy, oz, dx, dy, dz, limit, query)

@@ -1,6 +1,6 @@
 package tracer.scene
 
-import tracer.geometry.{Box, Cone, Csg, Placed, Plane, Shape, Sphere, Torus, Triangle}
+import tracer.geometry.{Box, Cone, Csg, Mesh, Placed, Plane, Shape, Sphere, Torus, Triangle}
 import tracer.math.Placement
 
 /** Where the surfaces of a scene object sit in an element tree, for the writers that rebuild one
@@ -50,6 +50,7 @@ object Inheritance:
   private def leafSpaces(s: Shape, placements: List[Placement]): Vector[List[Placement]] = s match
     case p: Placed => leafSpaces(p.shape, p.placement :: placements)
     case c: Csg    => c.children.flatMap(leafSpaces(_, Placement.Identity :: placements))
+    case m: Mesh   => Vector.fill(m.faceCount)(space(placements))
     case _: (Sphere | Plane | Triangle | Box | Cone | Torus) => Vector(space(placements))
 
   /** True when `surface`'s pattern, if it has one, lies in `here`. */

@@ -185,7 +185,7 @@ class KernelProperties extends ScalaCheckSuite:
       rays.foreach { r =>
         val t       = Shape.distance(s, r)
         val general = s match
-          case _: (Sphere | Plane | Triangle)         => false
+          case _: (Sphere | Plane | Triangle | Mesh)  => false
           case _: (Box | Cone | Torus | Placed | Csg) => true
         Shape.crossings(s, r).headOption.filter(_ => general && t < Double.PositiveInfinity) match
           case Some(c) =>

@@ -89,6 +89,7 @@ class ShapeProperties extends ScalaCheckSuite:
         val ring = t.major + t.minor * Math.cos(phi)
         Vec3(ring * Math.cos(theta), t.minor * Math.sin(phi), ring * Math.sin(theta))
     case p: Placed => pointOn(p.shape).map(p.transform.point)
+    case m: Mesh   => Gen.choose(0, m.faceCount - 1).flatMap(f => pointOn(m.face(f)))
     case _: Csg    => Gen.fail
 
   /** A shape, a point on it, and a ray from a random origin aimed at that point. */
@@ -104,6 +105,7 @@ class ShapeProperties extends ScalaCheckSuite:
       Math.abs(p.distance(s.centre) - s.radius) <= 1e-9 * (s.radius + s.centre.length + 1e3)
     case pl: Plane   => Math.abs(p.dot(pl.normal) - pl.distance) <= 1e-8 * (p.length + 1)
     case t: Triangle => Math.abs(p.dot(t.normal) - t.distance) <= 1e-8 * (p.length + 1)
+    case m: Mesh     => m.faces.exists(isOn(_, p))
     case b: Box      =>
       val (lo, hi)                   = (b.extent.lo, b.extent.hi)
       val e                          = 1e-8 * (p.length + 1)

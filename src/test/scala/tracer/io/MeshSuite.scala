@@ -1,7 +1,7 @@
 package tracer.io
 
 import java.nio.file.Files
-import tracer.geometry.{SurfaceCoordinates, Triangle}
+import tracer.geometry.{Mesh, Shape, SurfaceCoordinates, Triangle}
 import tracer.image.{Bitmap, Colour}
 import tracer.math.Vec3
 import tracer.render.{CameraConfig, Renderer}
@@ -35,6 +35,13 @@ class MeshSuite extends munit.FunSuite with Approx:
       .foreach(why => fail(s"docs/scene.xsd refuses the scene: $why"))
     read
 
+  extension (s: Scene)
+    /** The first face of the first object, a mesh: the triangle it stands for. */
+    private def firstFace(using munit.Location): Triangle = s.firstShape[Mesh].face(0)
+
+  /** The faces of the scene's meshes, all told. */
+  private def faceCount(s: Scene): Int = s.objects.map(o => Shape.leafCount(o.shape)).sum
+
   private val quad = "v -1 0 0\nv 1 0 0\nv 1 1.5 0\nv -1 1.5 0\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n"
 
   test(
@@ -44,7 +51,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj" scale="2"><rotate x="90" y="90" z="0"/><translate x="1" y="2" z="3"/></mesh>""",
       "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3"
     )
-    val t = placed.firstShape[Triangle]
+    val t = placed.firstFace
     // (1,0,0)·2 = (2,0,0): Rx(90) keeps it, Ry(90) gives (0,0,−2), + (1,2,3) = (1,2,1).
     assertVecClose(t.t0, Vec3(1, 2, 1), 1e-12)
     // (0,2,0): Rx(90) → (0,0,2); Ry(90) → (2,0,0); + T = (3,2,3).
@@ -56,14 +63,14 @@ class MeshSuite extends munit.FunSuite with Approx:
     val t = scene(
       """<mesh file="m.obj"><rotate x="0" y="0" z="90"/></mesh>""",
       "v 1 0 0\nv 0 0 1\nv 0 1 0\nf 1 2 3"
-    ).firstShape[Triangle]
+    ).firstFace
     assertVecClose(t.t0, Vec3(0, 1, 0), 1e-12)
     assertVecClose(t.t2, Vec3(-1, 0, 0), 1e-12)
 
   test("collinear faces are skipped with one warning; unknown statements warned once"):
     val s =
       scene("""<mesh file="m.obj"/>""", quad + "v 2 0 0\nvp 1\nf 1 2 3\nf 1 2 5\nf 1 5 2\nf 1 3 4")
-    assertEquals(s.objects.length, 2)
+    assertEquals(faceCount(s), 2)
     assertEquals(
       warnings.toList,
       List(
@@ -120,7 +127,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj"><surface><texture file="c.ppm"/></surface></mesh>""",
       quad + "f 1/1 2/2 3/3 4/4"
     )
-    val t = s.firstShape[Triangle]
+    val t = s.firstFace
     assertEquals(
       t.textureCorners,
       Some((SurfaceCoordinates(0, 0), SurfaceCoordinates(2, 0), SurfaceCoordinates(2, 2)))
@@ -138,7 +145,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       s"<scene>$camera<mesh file=\"models/q.obj\"/></scene>",
       SceneSources.files(dir)
     )
-    assertEquals(loaded.map(_.objects.length), Right(2))
+    assertEquals(loaded.map(faceCount), Right(2))
     Files.delete(dir.resolve("models/q.obj")); Files.delete(dir.resolve("models"));
     Files.delete(dir)
 
@@ -149,7 +156,7 @@ class MeshSuite extends munit.FunSuite with Approx:
       """<mesh file="m.obj" smooth="true" scale="3"><rotate x="0" y="90" z="0"/><translate x="5" y="0" z="0"/></mesh>""",
       bent + "f 1//1 2//2 3//3"
     )
-    val t    = placed.firstShape[Triangle]
+    val t    = placed.firstFace
     val half = Math.sqrt(0.5)
     // Ry(90) takes (x, y, z) to (z, y, −x).
     val (n0, n1, n2) = t.cornerNormals.getOrElse(fail("no normals"))
@@ -159,14 +166,14 @@ class MeshSuite extends munit.FunSuite with Approx:
 
   test("without smooth, or on a face lacking a normal at a corner, a mesh face stays flat"):
     val flat = scene("""<mesh file="m.obj"/>""", bent + "f 1//1 2//2 3//3")
-    assertEquals(flat.firstShape[Triangle].cornerNormals, None)
+    assertEquals(flat.firstFace.cornerNormals, None)
     val partly = scene("""<mesh file="m.obj" smooth="true"/>""", bent + "f 1//1 2 3//3")
-    assertEquals(partly.firstShape[Triangle].cornerNormals, None)
+    assertEquals(partly.firstFace.cornerNormals, None)
     val explicit = scene("""<mesh file="m.obj" smooth="false"/>""", bent + "f 1//1 2//2 3//3")
-    assertEquals(explicit.firstShape[Triangle].cornerNormals, None)
+    assertEquals(explicit.firstFace.cornerNormals, None)
 
   test("a smooth face shades with its corners' normals blended by barycentric weights"):
-    import tracer.geometry.{Hit, Ray, Shape}
+    import tracer.geometry.{Hit, Ray}
     val t =
       scene("""<mesh file="m.obj" smooth="true"/>""", bent + "f 1//1 2//2 3//3").objects.head.shape
     val ray         = Ray(Vec3(0.25, 0.25, -1), Vec3.UnitZ)

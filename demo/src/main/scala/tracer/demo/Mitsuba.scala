@@ -207,6 +207,8 @@ object Mitsuba:
       val normals =
         tr.cornerNormals.map((a, b, c) => (f.direction(a), f.direction(b), f.direction(c)))
       Right(Vector(Facet((f(tr.t0), f(tr.t1), f(tr.t2)), normals, surface, order)))
+    case m: Mesh =>
+      traverse(m.faces.toVector)(twin(_, f, surface, order)).map(_.flatten.toVector)
     case p: Plane =>
       Right(planeFacets(f(p.normal * p.distance), f.direction(p.normal), surface, order))
     case b: Box =>

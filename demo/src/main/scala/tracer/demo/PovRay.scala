@@ -102,6 +102,12 @@ object PovRay:
         else
           s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$leafRest"
       case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$leafRest"
+      case m: Mesh   =>
+        // Its faces, each the triangle it stands for, as when each was a shape of its own.
+        Iterator
+          .range(0, m.faceCount)
+          .map(f => shape(m.face(f), o, leaf + f, chain, enclosing, look))
+          .mkString("\n")
       case p: Placed => shape(p.shape, o, leaf, p.placement :: chain, enclosing, look)
       case c: Csg    =>
         val name = c.operation match

@@ -24,10 +24,9 @@ class BigMeshSuite extends munit.FunSuite:
       ObjReader.parse(BufferedReader(StringReader(obj)), "knot.obj").fold(fail(_), identity)
     assertEquals(mesh.triangles.length, 2 * segments * sides)
     assertEquals(mesh.skippedKinds, Nil)
-    // One Vec3 per vertex, shared by the faces that use it.
-    val distinct = java.util.IdentityHashMap[Vec3, Unit]()
-    mesh.triangles.foreach(t => List(t.a, t.b, t.c).foreach(distinct.put(_, ())))
-    assertEquals(distinct.size, segments * sides)
+    // One vertex each, shared by the faces that use it: the faces are index triples.
+    assertEquals(mesh.vertices.length, 3 * segments * sides)
+    assertEquals(mesh.corners.toSet.size, segments * sides)
 
   test("the mesh's world finds what testing every triangle finds"):
     val mesh =

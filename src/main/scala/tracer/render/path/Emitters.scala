@@ -1,6 +1,6 @@
 package tracer.render.path
 
-import tracer.geometry.{Sphere, Triangle}
+import tracer.geometry.{Mesh, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
 import tracer.render.World
@@ -35,7 +35,7 @@ enum Emitter:
   /** A glowing sphere (shape `index` of the world), drawn by the solid angle it fills. */
   case Ball(index: Int, sphere: Sphere, emission: Colour)
 
-  /** A glowing triangle (shape `index`), drawn uniformly by area. */
+  /** A glowing triangle (shape `index`, or a face of the mesh that is), drawn uniformly by area. */
   case Face(index: Int, triangle: Triangle, emission: Colour, area: Double)
 
   /** The background, radiance B from every direction no surface blocks, drawn uniformly over
@@ -44,7 +44,8 @@ enum Emitter:
   case Sky(radiance: Colour)
 
 /** The emitters of a scene that next-event estimation samples: its point and area lights, its
-  * glowing spheres and triangles (top-level shapes, not inside a placement or a combination), and
+  * glowing spheres, triangles and meshes' faces (top-level shapes, not inside a placement or a
+  * combination; each face of a mesh an emitter of its own, as when each was a triangle), and
   * the sky when the background is not black. Each is chosen with the same chance 1/count. Glowing
   * planes, solids and combinations are found by the paths alone.
   *
@@ -61,26 +62,29 @@ final class Emitters(scene: Scene, world: World):
     val shapes = scene.objects.zipWithIndex.collect {
       case (o, i) if o.leafSurfaces.isEmpty && o.surface.emits =>
         o.shape match
-          case s: Sphere   => Some(Emitter.Ball(i, s, o.surface.emission))
-          case t: Triangle =>
-            Some(Emitter.Face(i, t, o.surface.emission, t.a.cross(t.b).length / 2))
-          case _ => None
+          case s: Sphere   => Vector(Emitter.Ball(i, s, o.surface.emission))
+          case t: Triangle => Vector(face(i, t, o.surface.emission))
+          case m: Mesh     => m.faces.map(face(i, _, o.surface.emission)).toVector
+          case _           => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
     IArray.from(lights ++ shapes ++ sky)
 
   private val count = all.length
 
-  // The emitter of each world shape that has one, −1 for the others.
+  // The emitter of each world shape that has one (a mesh: of its first face), −1 for the others.
   private val ofShape: Array[Int] =
     val slots = Array.fill(scene.objects.size)(-1)
-    all.indices.foreach(k =>
+    all.indices.reverse.foreach(k =>
       all(k) match
         case Emitter.Ball(i, _, _)    => slots(i) = k
         case Emitter.Face(i, _, _, _) => slots(i) = k
         case _                        => ()
     )
     slots
+
+  private def face(i: Int, t: Triangle, emission: tracer.image.Colour): Emitter =
+    Emitter.Face(i, t, emission, t.a.cross(t.b).length / 2)
 
   /** True when there is nothing to sample. */
   def isEmpty: Boolean = count == 0
@@ -96,12 +100,14 @@ final class Emitters(scene: Scene, world: World):
   def samples(i: Int): Boolean = ofShape(i) >= 0
 
   /** The density per unit solid angle with which [[sample]] from `from` draws `point` on the
-    * emitting front of shape `i` (choice included), 0 when it cannot.
+    * emitting front of shape `i` (choice included), 0 when it cannot; `leaf` is the hit's, which
+    * on a mesh names the face.
     */
-  def density(i: Int, from: Vec3, point: Vec3): Double =
+  def density(i: Int, from: Vec3, point: Vec3, leaf: Int = 0): Double =
     if ofShape(i) < 0 then 0.0
     else
-      all(ofShape(i)) match
+      // A sphere's and a triangle's hits are on leaf 0; a mesh's faces follow its first in order.
+      all(ofShape(i) + leaf) match
         case Emitter.Ball(_, sphere, _)  => Emitters.coneDensity(sphere, from) / count
         case Emitter.Face(_, t, _, area) =>
           val w  = point - from

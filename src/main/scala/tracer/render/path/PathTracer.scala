@@ -168,12 +168,13 @@ object PathTracer:
           going = false
         else
           val shape   = world.shape(i)
-          val hit     = Shape.hitAt(shape, ray, query.distance)
+          val hit     = world.hitAt(i, ray, query)
           val surface = world.surface(i, hit.leaf)
           if hit.front && surface.emits then
             val e     = surface.emission
-            val light = if lastDensity > 0 then emitters.density(i, lastPoint, hit.point) else 0.0
-            val w     = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
+            val light =
+              if lastDensity > 0 then emitters.density(i, lastPoint, hit.point, hit.leaf) else 0.0
+            val w = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
             r += tr * e.r * w
             g += tg * e.g * w
             b += tb * e.b * w

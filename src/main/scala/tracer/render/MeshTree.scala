@@ -1,0 +1,239 @@
+package tracer.render
+
+import scala.concurrent.ExecutionContext
+import tracer.geometry.Mesh
+
+/** A mesh's own ray kernel: a 4-wide bounding volume hierarchy over its faces (built by
+  * [[BvhBuilder.faces]], on the render's pool when one is given), with each face's plane and
+  * corners' places in leaf order. The scene's [[Bvh]] holds the mesh as one primitive and asks
+  * this tree when a ray reaches its box (a two-level hierarchy, as pbrt's instances).
+  *
+  * Perf: a face takes 4 doubles (its plane) and 3 ints (its corners' offsets into the mesh's
+  * shared vertex array) here, against 16 doubles and a `Triangle` of six `Vec3`s when every face
+  * was a shape of its own; the rest of the face's constants are derived from its corners by
+  * [[tracer.geometry.Mesh.faceDistance]], the same operations as the `Triangle`'s, so the
+  * distances are the same bit for bit (`MeshProperties`; docs/performance.md, round 6;
+  * `MeshBench`).
+  *
+  * @param mesh the mesh
+  * @param pool where to build the tree: the render's threads, or this one for `None`
+  */
+final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
+  // The binary tree is dropped once collapsed: the queries walk the wide one.
+  private val (wide, faces) =
+    val tree = BvhBuilder.faces(mesh).build(pool)
+    (WideTree.collapse(tree), tree.order)
+  private val wb       = wide.boxes
+  private val wc       = wide.child
+  private val wn       = wide.count
+  private val vertices = mesh.vertices
+  // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
+  // offsets of its corners in `vertices` at 3k.
+  private val (planes, at) = MeshTree.leafOrder(mesh, faces)
+
+  /** The number of nodes of the tree, for tests and benchmarks. */
+  def nodeCount: Int = wide.size
+
+  /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the mesh's
+    * nearest face at a t ≤ `limit` (+∞ when there is none), the face itself left in
+    * `query.meshFace`: the lowest-numbered of the faces at that distance, as a loop over the faces
+    * in order would find it.
+    */
+  def nearest(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Double =
+    // Perf: Bvh.nearest's ordered walk of a 4-wide tree on the query's second stack (the scene's
+    // walk is still under way on the first), face tests on the leaf-order arrays.
+    val stack   = query.meshNodes
+    val entries = query.meshEntries
+    var best    = Int.MaxValue
+    var bestT   = limit
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            true
+          )
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        if entries(sp) <= bestT then
+          val count = wn(slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val f = faces(k)
+                if t < bestT || f < best then
+                  bestT = t
+                  best = f
+              k += 1
+          else
+            sp = WideWalk.push(
+              wb,
+              wn,
+              wc(slot),
+              sp,
+              stack,
+              entries,
+              ox,
+              oy,
+              oz,
+              ix,
+              iy,
+              iz,
+              sx,
+              sy,
+              sz,
+              bestT,
+              true
+            )
+    }
+    query.meshFace = best
+    if best == Int.MaxValue then Double.PositiveInfinity else bestT
+
+  /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
+    * first.
+    */
+  def occluded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
+    val stack   = query.meshNodes
+    val entries = query.meshEntries
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var hit = false
+      var sp  =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            false
+          )
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = wn(slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
+            k += 1
+        else
+          sp = WideWalk.push(
+            wb,
+            wn,
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            false
+          )
+      hit
+    }
+
+  /** The distance to leaf-order face k ([[tracer.geometry.Mesh.faceDistance]]). */
+  private inline def face(
+      k: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    Mesh.faceDistance(
+      planes(4 * k),
+      planes(4 * k + 1),
+      planes(4 * k + 2),
+      planes(4 * k + 3),
+      vertices,
+      at(3 * k),
+      at(3 * k + 1),
+      at(3 * k + 2),
+      cutoff,
+      ox,
+      oy,
+      oz,
+      dx,
+      dy,
+      dz
+    )
+
+/** Laying a mesh's faces out for its tree. */
+private object MeshTree:
+  /** The planes (4 doubles a face) and corner offsets (3 ints) of `mesh`'s faces `order`. */
+  def leafOrder(mesh: Mesh, order: Array[Int]): (Array[Double], Array[Int]) =
+    val planes = new Array[Double](4 * order.length)
+    val at     = new Array[Int](3 * order.length)
+    // Perf: one pass copying each face's plane and corner offsets into leaf order, in a method
+    // of its own so that it is compiled apart from the constructor.
+    var k = 0
+    while k < order.length do
+      val f = order(k)
+      planes(4 * k) = mesh.planes(4 * f); planes(4 * k + 1) = mesh.planes(4 * f + 1)
+      planes(4 * k + 2) = mesh.planes(4 * f + 2); planes(4 * k + 3) = mesh.planes(4 * f + 3)
+      at(3 * k) = 3 * mesh.corners(3 * f); at(3 * k + 1) = 3 * mesh.corners(3 * f + 1)
+      at(3 * k + 2) = 3 * mesh.corners(3 * f + 2)
+      k += 1
+    (planes, at)

@@ -1,0 +1,104 @@
+package tracer.render
+
+/** The steps of a walk down a [[WideTree]], shared by the scene's [[Bvh]] and each mesh's
+  * [[MeshTree]]: all `inline`, so each walk is compiled as if written out in place.
+  */
+private[render] object WideWalk:
+
+  /** Runs `body` on the ray's inverse direction and, per axis, the offset (0 or 3) of a box's
+    * near corner within its six coordinates.
+    *
+    * Perf: `inline` with an inline function: the lambda's body is spliced in, so there is no tuple
+    * or object to allocate (a tuple of doubles is boxed) and no call.
+    */
+  inline def walk[A](dx: Double, dy: Double, dz: Double)(
+      inline body: (Double, Double, Double, Int, Int, Int) => A
+  ): A =
+    val ix = 1 / dx
+    val iy = 1 / dy
+    val iz = 1 / dz
+    body(
+      ix,
+      iy,
+      iz,
+      if ix >= 0 then 0 else 3,
+      if iy >= 0 then 0 else 3,
+      if iz >= 0 then 0 else 3
+    )
+
+  /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
+    * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
+    * farthest first, so the nearest is popped next. Returns the new stack size.
+    */
+  inline def push(
+      wb: Array[Float],
+      wn: Array[Int],
+      node: Int,
+      sp: Int,
+      stack: Array[Int],
+      entries: Array[Double],
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double,
+      inline ordered: Boolean
+  ): Int =
+    // Why: the stack top moves as slots are pushed; an insertion sort keeps them farthest first.
+    var top = sp
+    var c   = 0
+    while c < WideTree.Width do
+      val slot = WideTree.Width * node + c
+      if wn(slot) >= 0 then
+        val t = entry(wb, 24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
+        if t < Double.PositiveInfinity then
+          var j = top
+          if ordered then
+            while j > sp && entries(j - 1) < t do
+              stack(j) = stack(j - 1); entries(j) = entries(j - 1)
+              j -= 1
+          stack(j) = slot; entries(j) = t
+          top += 1
+      c += 1
+    top
+
+  /** The distance at which the ray enters the float box at `b` of `wb` (a child's low x; its
+    * other coordinates 4 floats apart), or +∞ when it misses it before `limit`: the slab test on
+    * the float box widened to double (exactly), near planes chosen by `sx` etc. (0 for the low
+    * side, 3 for the high: 4 × that floats on).
+    */
+  inline def entry(
+      wb: Array[Float],
+      b: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double
+  ): Double =
+    // Perf: on four floats apart: no box object, local doubles narrowed in place.
+    var tmin = 0.0
+    var tmax = limit
+    val nx   = (wb(b + 4 * sx).toDouble - ox) * ix
+    val fx   = (wb(b + 12 - 4 * sx).toDouble - ox) * ix
+    if nx > tmin then tmin = nx
+    if fx < tmax then tmax = fx
+    val ny = (wb(b + 4 + 4 * sy).toDouble - oy) * iy
+    val fy = (wb(b + 16 - 4 * sy).toDouble - oy) * iy
+    if ny > tmin then tmin = ny
+    if fy < tmax then tmax = fy
+    val nz = (wb(b + 8 + 4 * sz).toDouble - oz) * iz
+    val fz = (wb(b + 20 - 4 * sz).toDouble - oz) * iz
+    if nz > tmin then tmin = nz
+    if fz < tmax then tmax = fz
+    if tmin <= tmax then tmin else Double.PositiveInfinity
