@@ -38,7 +38,8 @@ final class PathTracer(
 
   // The scattering function of every shape whose surface is the same at every point (one plain
   // colour, no surfaces per leaf), made once.
-  private[path] val bsdfs: IArray[Option[Bsdf]] = IArray.from(scene.objects.map { o =>
+  // Perf: a plain array (a generic IArray's element is read through ScalaRunTime.array_apply).
+  private[path] val bsdfs: Array[Option[Bsdf]] = Array.from(scene.objects.map { o =>
     o.surface.pigment match
       case Pigment.Solid(c) if o.leafSurfaces.isEmpty => Some(Bsdf.of(o.surface, c, o.surface.ior))
       case _                                          => None
