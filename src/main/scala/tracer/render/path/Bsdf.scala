@@ -450,9 +450,8 @@ object Bsdf:
     val a    = -1 / (sign + nz)
     val b    = nx * ny * a
     val r    = Math.sqrt(u1)
-    val phi  = 2 * Math.PI * u2
-    val p    = r * StrictMath.cos(phi)
-    val q    = r * StrictMath.sin(phi)
+    val p    = r * Turn.cos(u2) // φ = 2π·u2
+    val q    = r * Turn.sin(u2)
     val h    = Math.sqrt(Math.max(0.0, 1 - u1))
     out.sx = p * (1 + sign * nx * nx * a) + q * b + h * nx
     out.sy = p * (sign * b) + q * (sign + ny * ny * a) + h * ny

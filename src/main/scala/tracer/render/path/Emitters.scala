@@ -205,11 +205,10 @@ final class Emitters(scene: Scene):
       case Emitter.Sky(radiance) =>
         val z   = 1 - 2 * u1
         val r   = Math.sqrt(Math.max(0.0, 1 - z * z))
-        val phi = 2 * Math.PI * u2
         val pdf = 1 / (4 * Math.PI * count)
         out.light(
-          r * StrictMath.cos(phi),
-          r * StrictMath.sin(phi),
+          r * Turn.cos(u2), // φ = 2π·u2
+          r * Turn.sin(u2),
           z,
           Double.PositiveInfinity,
           radiance.r / pdf,
@@ -256,11 +255,10 @@ object Emitters:
       val cap       = capFraction(sphere.radiusSquared / d2)
       val cos       = 1 - u1 * cap
       val sin       = Math.sqrt(Math.max(0.0, 1 - cos * cos))
-      val phi       = 2 * Math.PI * u2
       val axis      = wc / dc
       val (s, t)    = Bsdf.tangents(axis)
       val direction =
-        (s * (sin * StrictMath.cos(phi)) + t * (sin * StrictMath.sin(phi)) + axis * cos)
+        (s * (sin * Turn.cos(u2)) + t * (sin * Turn.sin(u2)) + axis * cos)
           .normalisedOr(axis)
       val tca  = direction.dot(wc)
       val half = Math.sqrt(Math.max(0.0, sphere.radiusSquared - (d2 - tca * tca)))
