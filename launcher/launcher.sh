@@ -251,7 +251,8 @@ tracer_cache_make() {
 }
 
 # tracer_training_list WORK TRAINING_DIR...: prints the training run's batch list: every *.xml of
-# the TRAINING_DIRs, each to a picture in WORK.
+# the TRAINING_DIRs, each to a picture in WORK; and every *.xml of their path/ folders path-traced
+# (a frame's own options), to .png and .pfm.
 tracer_training_list() {
   local work=$1 dir scene n=0
   shift
@@ -260,6 +261,12 @@ tracer_training_list() {
       if [ -f "$scene" ]; then
         n=$((n + 1))
         printf '%s\t%s\n' "$scene" "$work/frame-$n.png"
+      fi
+    done
+    for scene in "$dir"/path/*.xml; do
+      if [ -f "$scene" ]; then
+        n=$((n + 1))
+        printf '%s\t%s\t-m path -s 2\n' "$scene" "$work/frame-$n.png" "$scene" "$work/frame-$n.pfm"
       fi
     done
   done

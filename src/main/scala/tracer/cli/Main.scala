@@ -117,7 +117,8 @@ object Main:
     else Right(())
 
   /** Renders every frame of the batch list `list` in this one process, each as `-i SCENE OUTPUT`
-    * (with `-R a:b` when its line gives rows) and `options`; with `-t`, prints
+    * (with `-R a:b` when its line gives rows) and `options`, then the line's own options; with
+    * `-t`, prints
     * `Tracetime: N ms OUTPUT` for each. A frame that fails is
     * reported as `tracer: SCENE: why` and the others go on; the status is 1 if any failed.
     */
@@ -136,12 +137,19 @@ object Main:
       frames <- Batch.parse(source).left.map(why => s"batch list $list: $why")
     yield
       val failed = frames.count { frame =>
-        val one = options.copy(
+        val placed = options.copy(
           input = Some(frame.scene),
           output = frame.output,
           band = frame.band.orElse(options.band)
         )
-        render(one, in, err, cwd) match
+        val one =
+          if frame.options.isEmpty then Right(placed)
+          else
+            Options
+              .forFrame(placed, frame.options)
+              .left
+              .map(why => Problem(UsageError, s"line ${frame.line}: $why"))
+        one.flatMap(render(_, in, err, cwd)) match
           case Right(millis) =>
             if options.timing then out.println(s"Tracetime: $millis ms ${frame.output}")
             false

@@ -122,6 +122,23 @@ object Options:
         case (_, first :: _)      => Command.UsageError(first)
         case (None, Nil)          => Command.UsageError("invalid arguments")
 
+  /** The options of one frame of a batch: `args`, render options alone, applied on top of
+    * `base` (the command line's, with the frame's scene and output), or why they cannot be.
+    */
+  def forFrame(base: Options, args: Seq[String]): Either[String, Options] =
+    val (result, effects) = OParser.runParser(parser, args, base)
+    val errors            = effects.collect { case OEffect.ReportError(message) => message }
+    val help              = effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false }
+    result match
+      case _ if help || errors.nonEmpty =>
+        Left(errors.headOption.getOrElse("--help is no render option"))
+      case Some(options)
+          if options.output != base.output || options.input != base.input ||
+            modes(options) != modes(base) || options.version != base.version =>
+        Left("a frame's options are render options: no OUTPUT, -i or mode of its own")
+      case Some(options) => pathConflict(options).toLeft(options)
+      case None          => Left("invalid options")
+
   /** Why path mode's options and these options cannot go together, if they cannot: `-s`,
     * `--seed` and `--sampler` need `-m path`, and `-a` and `-q` are Whitted's alone.
     */
@@ -294,7 +311,9 @@ object Options:
       opt[String]("batch")
         .valueName("LIST")
         .action((v, o) => o.copy(batch = Some(v)))
-        .text("render every frame of LIST (lines SCENE<TAB>OUTPUT[<TAB>a:b]) in one process"),
+        .text(
+          "render every frame of LIST (lines SCENE<TAB>OUTPUT[<TAB>a:b][<TAB>OPTIONS]) in one process"
+        ),
       opt[Unit]("version")
         .action((_, o) => o.copy(version = true))
         .text("print the version and exit"),

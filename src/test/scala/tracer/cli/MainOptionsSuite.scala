@@ -201,3 +201,29 @@ class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
     assertEquals(joined, readImage(d.resolve("whole.ppm")))
     Files.writeString(d.resolve("bad.txt"), "s.xml\tx.ppm\t3:2\n")
     assertFailed(run(d, "--batch", "bad.txt")(), 1, "line 1", "-R must be a:b")
+
+  dir.test("--batch: a last column of options renders that frame with them, as a separate run"):
+    d =>
+      // Path mode for one frame (what the launcher's training run uses), a band with options,
+      // and the command line's options kept for the frames without.
+      Files.writeString(d.resolve("s.xml"), simple)
+      Files.writeString(
+        d.resolve("list.txt"),
+        "s.xml\tpath.pfm\t-m path -s 2\ns.xml\tband.ppm\t0:10\t-r 1\ns.xml\twhitted.ppm\n"
+      )
+      assertEquals(run(d, "-x", "40", "--batch", "list.txt")(), Run(0, "", ""))
+      run(d, "-x", "40", "-m", "path", "-s", "2", "-i", "s.xml", "path1.pfm")(): Unit
+      run(d, "-x", "40", "-r", "1", "-R", "0:10", "-i", "s.xml", "band1.ppm")(): Unit
+      run(d, "-x", "40", "-i", "s.xml", "whitted1.ppm")(): Unit
+      for (batched, single) <- List("path.pfm" -> "path1.pfm", "band.ppm" -> "band1.ppm") do
+        assertEquals(bytes(d.resolve(batched)), bytes(d.resolve(single)), batched)
+      assertEquals(bytes(d.resolve("whitted.ppm")), bytes(d.resolve("whitted1.ppm")))
+      // A frame whose options are bad fails alone, named by its line.
+      Files.writeString(
+        d.resolve("bad.txt"),
+        "s.xml\ta.ppm\t-a 2 -m path\ns.xml\tb.ppm\t-i t.xml\n"
+      )
+      val r = run(d, "-x", "8", "--batch", "bad.txt")()
+      assertEquals(r.status, 1)
+      assert(r.err.contains("line 1") && r.err.contains("-a is Whitted's"), r.err)
+      assert(r.err.contains("line 2") && r.err.contains("render options"), r.err)

@@ -79,42 +79,105 @@ final case class Bsdf(
 
   /** f(ωi, ωo)·|n · ωo| summed over the smooth lobes: zero for ωo on the far side of n. */
   def evaluate(n: Vec3, wi: Vec3, wo: Vec3): Colour =
-    val iz = n.dot(wi)
-    val oz = n.dot(wo)
-    if oz <= 0 || iz <= 0 then Colour.Black
+    val out = Scratch()
+    evaluateInto(out, n.x, n.y, n.z, wi.x, wi.y, wi.z, wo.x, wo.y, wo.z)
+    Colour(out.fr, out.fg, out.fb)
+
+  /** [[evaluate]] on coordinates, into `out.fr`, `out.fg`, `out.fb`: what path mode's loop calls,
+    * allocating nothing (PathBench).
+    */
+  def evaluateInto(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double
+  ): Unit =
+    val ci = nx * ix + ny * iy + nz * iz
+    val co = nx * ox + ny * oy + nz * oz
+    if co <= 0 || ci <= 0 then
+      out.fr = 0; out.fg = 0; out.fb = 0
     else
-      val lambert = oz / Math.PI
-      val rough   = glossy(n, wi, wo, iz, oz, reflectance = true)
-      Colour(diffuse.r * lambert + rough, diffuse.g * lambert + rough, diffuse.b * lambert + rough)
+      val lambert = co / Math.PI
+      val rough   = glossy(nx, ny, nz, ix, iy, iz, ox, oy, oz, ci, co, reflectance = true)
+      out.fr = diffuse.r * lambert + rough
+      out.fg = diffuse.g * lambert + rough
+      out.fb = diffuse.b * lambert + rough
 
   /** The density of ωo per unit solid angle when [[sample]] draws from the smooth lobes: each
     * lobe's density times the chance of choosing it. Zero on the far side of n.
     */
   def density(n: Vec3, wi: Vec3, wo: Vec3): Double =
-    val iz = n.dot(wi)
-    val oz = n.dot(wo)
-    if oz <= 0 || iz <= 0 || total <= 0 then 0.0
-    else (diffuseWeight * oz / Math.PI + glossy(n, wi, wo, iz, oz, reflectance = false)) / total
+    densityAt(n.x, n.y, n.z, wi.x, wi.y, wi.z, wo.x, wo.y, wo.z)
+
+  /** [[density]] on coordinates. */
+  def densityAt(
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double
+  ): Double =
+    val ci = nx * ix + ny * iy + nz * iz
+    val co = nx * ox + ny * oy + nz * oz
+    if co <= 0 || ci <= 0 || total <= 0 then 0.0
+    else
+      (diffuseWeight * co / Math.PI +
+        glossy(nx, ny, nz, ix, iy, iz, ox, oy, oz, ci, co, reflectance = false)) / total
 
   /** P·ggx(α_P) + K·ggx(α_K) times |cos θo| (`reflectance`), or their weighted densities. */
   private def glossy(
-      n: Vec3,
-      wi: Vec3,
-      wo: Vec3,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
       iz: Double,
+      ox: Double,
+      oy: Double,
       oz: Double,
+      ci: Double,
+      co: Double,
       reflectance: Boolean
   ): Double =
     if phong <= 0 && specular <= 0 then 0.0
     else
-      val h                                   = (wi + wo).normalisedOr(n)
-      val hz                                  = n.dot(h)
-      val ih                                  = wi.dot(h)
-      def lobe(weight: Double, alpha: Double) =
-        if weight <= 0 then 0.0
-        else if reflectance then weight * Microfacet.reflected(alpha, iz, oz, hz, ih)
-        else weight * Microfacet.density(alpha, iz, oz, hz, ih)
-      lobe(phong, alphaP) + lobe(specular, alphaK)
+      // h = (ωi + ωo) normalised, n when that has no length.
+      val sx  = ix + ox
+      val sy  = iy + oy
+      val sz  = iz + oz
+      val len = Math.sqrt(sx * sx + sy * sy + sz * sz)
+      val ok  = len > 0 && len < Double.PositiveInfinity
+      val hx  = if ok then sx / len else nx
+      val hy  = if ok then sy / len else ny
+      val hz0 = if ok then sz / len else nz
+      val hz  = nx * hx + ny * hy + nz * hz0
+      val ih  = ix * hx + iy * hy + iz * hz0
+      lobe(phong, alphaP, ci, co, hz, ih, reflectance) +
+        lobe(specular, alphaK, ci, co, hz, ih, reflectance)
+
+  /** One GGX lobe of weight `weight`: its f·|cos θo| or its density. */
+  private def lobe(
+      weight: Double,
+      alpha: Double,
+      ci: Double,
+      co: Double,
+      hz: Double,
+      ih: Double,
+      reflectance: Boolean
+  ): Double =
+    if weight <= 0 then 0.0
+    else if reflectance then weight * Microfacet.reflected(alpha, ci, co, hz, ih)
+    else weight * Microfacet.density(alpha, ci, co, hz, ih)
 
   /** A direction drawn from f: a lobe chosen by `choice`, then its direction by (u1, u2), and at
     * glass reflection or refraction by `fresnel` (each uniform in [0, 1)).
@@ -130,63 +193,184 @@ final case class Bsdf(
       u2: Double,
       fresnel: Double
   ): Scattered =
-    if total <= 0 then Scattered.Absorbed
+    val out = Scratch()
+    sampleInto(out, n.x, n.y, n.z, wi.x, wi.y, wi.z, entering, choice, u1, u2, fresnel)
+    Scattered(
+      Vec3(out.sx, out.sy, out.sz),
+      Colour(out.wr, out.wg, out.wb),
+      out.density,
+      out.transmitted,
+      out.bounce,
+      out.eta
+    )
+
+  /** [[sample]] on coordinates, into `out`'s scattering fields: what path mode's loop calls,
+    * allocating nothing (PathBench).
+    */
+  def sampleInto(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      entering: Boolean,
+      choice: Double,
+      u1: Double,
+      u2: Double,
+      fresnel: Double
+  ): Unit =
+    if total <= 0 then out.absorb()
     else
       val pick = choice * total
       if pick < diffuseWeight then
-        val wo = Bsdf.cosineHemisphere(n, u1, u2)
-        if phong <= 0 && specular <= 0 then lambertSample(n, wi, wo)
-        else smoothSample(n, wi, wo)
+        Bsdf.cosineHemisphereInto(out, nx, ny, nz, u1, u2)
+        if phong <= 0 && specular <= 0 then lambertSample(out, nx, ny, nz, ix, iy, iz)
+        else smoothSample(out, nx, ny, nz, ix, iy, iz)
       else if pick < diffuseWeight + phong then
-        smoothSample(n, wi, glossySample(n, wi, alphaP, u1, u2))
+        glossySample(out, nx, ny, nz, ix, iy, iz, alphaP, u1, u2)
+        smoothSample(out, nx, ny, nz, ix, iy, iz)
       else if pick < diffuseWeight + phong + specular then
-        smoothSample(n, wi, glossySample(n, wi, alphaK, u1, u2))
+        glossySample(out, nx, ny, nz, ix, iy, iz, alphaK, u1, u2)
+        smoothSample(out, nx, ny, nz, ix, iy, iz)
       else if pick < diffuseWeight + phong + specular + mirror || transmit <= 0 then
-        Scattered(Refraction.reflect(-wi, n), Colour.grey(total), 0, false, true, 1)
-      else if clear then Scattered(-wi, Colour.grey(total), 0, true, false, 1)
-      else dielectric(n, wi, entering, fresnel)
+        Bsdf.reflectInto(out, -ix, -iy, -iz, nx, ny, nz)
+        out.scatter(total, total, total, 0, false, true, 1)
+      else if clear then
+        out.sx = -ix; out.sy = -iy; out.sz = -iz
+        out.scatter(total, total, total, 0, true, false, 1)
+      else dielectric(out, nx, ny, nz, ix, iy, iz, entering, fresnel)
 
-  /** The smooth lobes' estimate for a direction drawn from one of them: f·|cos| over the
-    * mixture's density (the density of having drawn ωo by any smooth lobe).
+  /** The smooth lobes' estimate for the direction in `out.sx`… drawn from one of them: f·|cos|
+    * over the mixture's density (the density of having drawn ωo by any smooth lobe).
     */
-  private def smoothSample(n: Vec3, wi: Vec3, wo: Vec3): Scattered =
-    val pdf = density(n, wi, wo)
-    if pdf <= 0 then Scattered.Absorbed
-    else Scattered(wo, evaluate(n, wi, wo) / pdf, pdf, false, true, 1)
+  private def smoothSample(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double
+  ): Unit =
+    val ox  = out.sx
+    val oy  = out.sy
+    val oz  = out.sz
+    val pdf = densityAt(nx, ny, nz, ix, iy, iz, ox, oy, oz)
+    if pdf <= 0 then out.absorb()
+    else
+      evaluateInto(out, nx, ny, nz, ix, iy, iz, ox, oy, oz)
+      out.scatter(out.fr / pdf, out.fg / pdf, out.fb / pdf, pdf, false, true, 1)
 
   /** [[smoothSample]] where Lambert is the only smooth lobe: the weight is (1 − t)·kd·C over
     * the chance of choosing it, the same for every direction above n.
     */
-  private def lambertSample(n: Vec3, wi: Vec3, wo: Vec3): Scattered =
-    val oz = n.dot(wo)
-    if oz <= 0 || n.dot(wi) <= 0 then Scattered.Absorbed
-    else Scattered(wo, lambertWeight, diffuseWeight / total * oz / Math.PI, false, true, 1)
+  private def lambertSample(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double
+  ): Unit =
+    val co = nx * out.sx + ny * out.sy + nz * out.sz
+    if co <= 0 || nx * ix + ny * iy + nz * iz <= 0 then out.absorb()
+    else
+      out.scatter(
+        lambertWeight.r,
+        lambertWeight.g,
+        lambertWeight.b,
+        diffuseWeight / total * co / Math.PI,
+        false,
+        true,
+        1
+      )
 
   // (1 − t)·kd·C / (w_D / W): a Lambert sample's weight.
   private val lambertWeight =
     if diffuseWeight > 0 then diffuse * (total / diffuseWeight) else Colour.Black
 
-  /** A direction drawn by GGX's visible normals: the mirror image of ωi in a sampled microfacet. */
-  private def glossySample(n: Vec3, wi: Vec3, alpha: Double, u1: Double, u2: Double): Vec3 =
-    val (s, t) = Bsdf.tangents(n)
-    val m      = Microfacet.sampleNormal(alpha, wi.dot(s), wi.dot(t), wi.dot(n), u1, u2)
-    val world  = s * m.x + t * m.y + n * m.z
-    Refraction.reflect(-wi, world)
+  /** A direction drawn by GGX's visible normals: the mirror image of ωi in a sampled microfacet,
+    * into `out.sx`….
+    */
+  private def glossySample(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      alpha: Double,
+      u1: Double,
+      u2: Double
+  ): Unit =
+    // The frame of [[Bsdf.tangents]], in doubles.
+    val sign = if nz >= 0 then 1.0 else -1.0
+    val a    = -1 / (sign + nz)
+    val b    = nx * ny * a
+    val sx   = 1 + sign * nx * nx * a
+    val sy   = sign * b
+    val sz   = -sign * nx
+    val tx   = b
+    val ty   = sign + ny * ny * a
+    val tz   = -ny
+    val m    = Microfacet.sampleNormal(
+      alpha,
+      ix * sx + iy * sy + iz * sz,
+      ix * tx + iy * ty + iz * tz,
+      ix * nx + iy * ny + iz * nz,
+      u1,
+      u2
+    )
+    Bsdf.reflectInto(
+      out,
+      -ix,
+      -iy,
+      -iz,
+      sx * m.x + tx * m.y + nx * m.z,
+      sy * m.x + ty * m.y + ny * m.z,
+      sz * m.x + tz * m.y + nz * m.z
+    )
 
   /** Mitsuba's smooth `dielectric`: reflection with the exact unpolarised Fresnel reflectance F
     * (1 past the critical angle), refraction otherwise, index η inside and 1 outside. A refracted
     * path's radiance is scaled by (n_i / n_t)², as light is squeezed into a narrower cone.
     */
-  private def dielectric(n: Vec3, wi: Vec3, entering: Boolean, u: Double): Scattered =
-    val eta     = if entering then ior else 1 / ior // n_t / n_i
-    val cosI    = Math.min(1.0, n.dot(wi))
-    val (f, ct) = Bsdf.fresnel(cosI, eta)
+  private def dielectric(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      entering: Boolean,
+      u: Double
+  ): Unit =
+    val eta  = if entering then ior else 1 / ior // n_t / n_i
+    val cosI = Math.min(1.0, nx * ix + ny * iy + nz * iz)
+    val ct   = Bsdf.refractedCosine(cosI, eta)
+    val f    = Bsdf.reflectance(cosI, eta, ct)
     val weight = total // the glass lobe's weight t over its chance t / total
-    if u < f then Scattered(Refraction.reflect(-wi, n), Colour.grey(weight), 0, false, true, 1)
+    if u < f then
+      Bsdf.reflectInto(out, -ix, -iy, -iz, nx, ny, nz)
+      out.scatter(weight, weight, weight, 0, false, true, 1)
     else
-      val ratio     = 1 / eta
-      val direction = (-wi * ratio + n * (ratio * cosI - ct)).normalisedOr(-wi)
-      Scattered(direction, Colour.grey(weight * ratio * ratio), 0, true, true, eta)
+      val ratio = 1 / eta
+      val q     = ratio * cosI - ct
+      val vx    = -ix * ratio + nx * q
+      val vy    = -iy * ratio + ny * q
+      val vz    = -iz * ratio + nz * q
+      val len   = Math.sqrt(vx * vx + vy * vy + vz * vz)
+      if len > 0 && len < Double.PositiveInfinity then
+        out.sx = vx / len; out.sy = vy / len; out.sz = vz / len
+      else
+        out.sx = -ix; out.sy = -iy; out.sz = -iz
+      val w = weight * ratio * ratio
+      out.scatter(w, w, w, 0, true, true, eta)
 
 /** Building a [[Bsdf]] from a surface, and the sampling helpers. */
 object Bsdf:
@@ -212,32 +396,66 @@ object Bsdf:
     * the critical angle, where the reflectance is 1) (Mitsuba's `fresnel`).
     */
   def fresnel(cosI: Double, eta: Double): (Double, Double) =
+    val cosT = refractedCosine(cosI, eta)
+    (reflectance(cosI, eta, cosT), cosT)
+
+  /** The cos θt of [[fresnel]]: 0 past the critical angle (or for cos θi ≤ 0). */
+  def refractedCosine(cosI: Double, eta: Double): Double =
     val inverse = 1 / eta
     val cosT2   = 1 - inverse * inverse * (1 - cosI * cosI)
-    if cosT2 <= 0 then (1.0, 0.0)
-    else if cosI <= 0 then (1.0, 0.0)
+    if cosT2 <= 0 || cosI <= 0 then 0.0 else Math.sqrt(cosT2)
+
+  /** The reflectance of [[fresnel]] given its cos θt (from [[refractedCosine]]): 1 where that is 0. */
+  def reflectance(cosI: Double, eta: Double, cosT: Double): Double =
+    if cosT == 0 then 1.0
     else
-      val cosT = Math.sqrt(cosT2)
-      val s    = (eta * cosT - cosI) / (eta * cosT + cosI)
-      val p    = (eta * cosI - cosT) / (eta * cosI + cosT)
-      (0.5 * (s * s + p * p), cosT)
+      val s = (eta * cosT - cosI) / (eta * cosT + cosI)
+      val p = (eta * cosI - cosT) / (eta * cosI + cosT)
+      0.5 * (s * s + p * p)
+
+  /** The mirror direction of (dx, dy, dz) about unit n, as [[Refraction.reflect]] computes it,
+    * into `out.sx`….
+    */
+  def reflectInto(
+      out: Scratch,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double
+  ): Unit =
+    val k = 2 * (nx * dx + ny * dy + nz * dz)
+    out.sx = dx - nx * k
+    out.sy = dy - ny * k
+    out.sz = dz - nz * k
 
   /** A direction about unit `n` with density cos θ / π, from (u1, u2) uniform in [0, 1). */
   def cosineHemisphere(n: Vec3, u1: Double, u2: Double): Vec3 =
+    val out = Scratch()
+    cosineHemisphereInto(out, n.x, n.y, n.z, u1, u2)
+    Vec3(out.sx, out.sy, out.sz)
+
+  /** [[cosineHemisphere]] on coordinates, into `out.sx`…. */
+  def cosineHemisphereInto(
+      out: Scratch,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      u1: Double,
+      u2: Double
+  ): Unit =
     // The frame of [[tangents]], in doubles: this runs at every diffuse bounce.
-    val sign = if n.z >= 0 then 1.0 else -1.0
-    val a    = -1 / (sign + n.z)
-    val b    = n.x * n.y * a
+    val sign = if nz >= 0 then 1.0 else -1.0
+    val a    = -1 / (sign + nz)
+    val b    = nx * ny * a
     val r    = Math.sqrt(u1)
-    val phi  = 2 * Math.PI * u2
-    val p    = r * StrictMath.cos(phi)
-    val q    = r * StrictMath.sin(phi)
+    val p    = r * Turn.cos(u2) // φ = 2π·u2
+    val q    = r * Turn.sin(u2)
     val h    = Math.sqrt(Math.max(0.0, 1 - u1))
-    Vec3(
-      p * (1 + sign * n.x * n.x * a) + q * b + h * n.x,
-      p * (sign * b) + q * (sign + n.y * n.y * a) + h * n.y,
-      p * (-sign * n.x) + q * (-n.y) + h * n.z
-    )
+    out.sx = p * (1 + sign * nx * nx * a) + q * b + h * nx
+    out.sy = p * (sign * b) + q * (sign + ny * ny * a) + h * ny
+    out.sz = p * (-sign * nx) + q * (-ny) + h * nz
 
   /** Two unit vectors that make a right-handed orthonormal frame with unit `n` (Duff et al.,
     * "Building an Orthonormal Basis, Revisited", 2017).

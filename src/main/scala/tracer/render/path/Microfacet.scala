@@ -82,12 +82,11 @@ object Microfacet:
     val t2y = vz * t1x
     val t2z = vx * t1y - vy * t1x
     // A point on the projected disc, its lower half squeezed towards the view.
-    val r   = Math.sqrt(u1)
-    val phi = 2 * Math.PI * u2
-    val p1  = r * StrictMath.cos(phi)
-    val s   = 0.5 * (1 + vz)
-    val p2  = (1 - s) * Math.sqrt(Math.max(0.0, 1 - p1 * p1)) + s * r * StrictMath.sin(phi)
-    val pz  = Math.sqrt(Math.max(0.0, 1 - p1 * p1 - p2 * p2))
+    val r  = Math.sqrt(u1)
+    val p1 = r * Turn.cos(u2) // φ = 2π·u2
+    val s  = 0.5 * (1 + vz)
+    val p2 = (1 - s) * Math.sqrt(Math.max(0.0, 1 - p1 * p1)) + s * r * Turn.sin(u2)
+    val pz = Math.sqrt(Math.max(0.0, 1 - p1 * p1 - p2 * p2))
     // Back onto the hemisphere, then unstretched.
     val nx = p1 * t1x + p2 * t2x + pz * vx
     val ny = p1 * t1y + p2 * t2y + pz * vy

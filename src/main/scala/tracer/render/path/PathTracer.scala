@@ -1,9 +1,9 @@
 package tracer.render.path
 
-import tracer.geometry.{Hit, Ray, Shape}
+import tracer.geometry.Shape
 import tracer.image.Colour
 import tracer.math.Vec3
-import tracer.render.{Integrator, Projection, Shading, World}
+import tracer.render.{Hits, Integrator, Projection, Shading, World}
 import tracer.scene.{Pigment, Scene}
 
 /** Path mode's integrator (docs/rendering.md, Path tracing): a pixel is the mean of N samples,
@@ -38,7 +38,8 @@ final class PathTracer(
 
   // The scattering function of every shape whose surface is the same at every point (one plain
   // colour, no surfaces per leaf), made once.
-  private[path] val bsdfs: IArray[Option[Bsdf]] = IArray.from(scene.objects.map { o =>
+  // Perf: a plain array (a generic IArray's element is read through ScalaRunTime.array_apply).
+  private[path] val bsdfs: Array[Option[Bsdf]] = Array.from(scene.objects.map { o =>
     o.surface.pigment match
       case Pigment.Solid(c) if o.leafSurfaces.isEmpty => Some(Bsdf.of(o.surface, c, o.surface.ior))
       case _                                          => None
@@ -82,13 +83,16 @@ final class PathTracer(
       j += 1
     Colour(r / samples, g / samples, b / samples)
 
-  /** The surface colour C at the hit: the texel or checker cell there, or the plain colour. */
-  private[path] def pigment(i: Int, hit: Hit): Colour = world.surface(i, hit.leaf).pigment match
-    case Pigment.Solid(c)          => c
-    case Pigment.Textured(texture) =>
-      val uv = Shape.surfaceCoordinates(world.shape(i), hit.point, hit.leaf)
-      texture.colourAt(uv.u, uv.v)
-    case checker: Pigment.Checker => Pigment.checkerColour(checker, hit.point)
+  /** The surface colour C at `point` on leaf `leaf` of shape i: the texel or checker cell there,
+    * or the plain colour.
+    */
+  private[path] def pigment(i: Int, point: Vec3, leaf: Int): Colour =
+    world.surface(i, leaf).pigment match
+      case Pigment.Solid(c)          => c
+      case Pigment.Textured(texture) =>
+        val uv = Shape.surfaceCoordinates(world.shape(i), point, leaf)
+        texture.colourAt(uv.u, uv.v)
+      case checker: Pigment.Checker => Pigment.checkerColour(checker, point)
 
 /** The row tasks of [[PathTracer]] and the weights it combines estimates with. */
 object PathTracer:
@@ -127,6 +131,7 @@ object PathTracer:
     private val sampler    = tracer.sampler
     private val query      = world.newQuery()
     private val visibility = Visibility(world, query, tracer.clear)
+    private val scratch    = Scratch()
     // Why: the last path's radiance, read by the pixel loop (see the class's Perf note).
     private[path] var r = 0.0
     private[path] var g = 0.0
@@ -137,11 +142,24 @@ object PathTracer:
 
     /** Sample j of pixel (x, y), whose sampler hash is `at`: the radiance one path brings back,
       * left in r, g, b.
+      *
+      * Perf: the ray, the hit and the throughput in local doubles, the scattering and the light
+      * samples in the task's [[Scratch]]: no Ray, Hit, vector, colour or sample per vertex
+      * (PathBench: 104 MB a frame before). The arithmetic is Shape.hitAt's, Bsdf's and
+      * Emitters' own, in the same order, so the pictures are the same bytes.
       */
     private[path] def trace(x: Int, y: Int, at: Long, j: Int): Unit =
       val offset = sampler.pairAt(at, j, 0)
-      var ray    =
+      val camera =
         tracer.projection.ray(x + Sampler.first(offset), y + Sampler.second(offset))
+      val out = scratch
+      // The ray.
+      var ox = camera.origin.x
+      var oy = camera.origin.y
+      var oz = camera.origin.z
+      var dx = camera.direction.x
+      var dy = camera.direction.y
+      var dz = camera.direction.z
       // The throughput, what the path has gathered, and its state.
       var tr          = 1.0
       var tg          = 1.0
@@ -150,11 +168,13 @@ object PathTracer:
       var bounces     = 0
       var vertex      = 0   // every surface met, clear passes included: which dimensions to use
       var lastDensity = 0.0 // the last bounce's direction density; 0 after the camera or a delta
-      var lastPoint   = ray.origin
+      var lx          = ox  // the last bounce's point
+      var ly          = oy
+      var lz          = oz
       var going       = true
       r = 0; g = 0; b = 0
       while going do
-        val i = world.nearest(ray, query)
+        val i = world.nearestAlong(ox, oy, oz, dx, dy, dz, Double.PositiveInfinity, query)
         if i < 0 then
           // The sky: background radiance, weighted against next-event estimation's sampling.
           val sky = world.background
@@ -167,20 +187,34 @@ object PathTracer:
           b += tb * sky.b * w
           going = false
         else
-          val shape   = world.shape(i)
-          val hit     = world.hitAt(i, ray, query)
-          val surface = world.surface(i, hit.leaf)
-          if hit.front && surface.emits then
+          // The hit as Shape.hitAt and Shape.shadingNormal give it (a mesh's on the face the query
+          // found), written into the query's fields and read out at once: no Ray or Hit a vertex.
+          Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query)
+          val px      = query.px
+          val py      = query.py
+          val pz      = query.pz
+          val nx      = query.nx // the normal facing the ray
+          val ny      = query.ny
+          val nz      = query.nz
+          val sx      = query.sx // the shading normal
+          val sy      = query.sy
+          val sz      = query.sz
+          val front   = query.front
+          val leaf    = query.leaf
+          val surface = world.surface(i, leaf)
+          if front && surface.emits then
             val e     = surface.emission
             val light =
-              if lastDensity > 0 then emitters.density(i, lastPoint, hit.point, hit.leaf) else 0.0
+              if lastDensity > 0 then emitters.densityAt(i, lx, ly, lz, px, py, pz, leaf)
+              else 0.0
             val w = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
             r += tr * e.r * w
             g += tg * e.g * w
             b += tb * e.b * w
           val bsdf = tracer.bsdfs(i) match
             case Some(fixed) => fixed
-            case None        => Bsdf.of(surface, tracer.pigment(i, hit), world.surface(i).ior)
+            case None        =>
+              Bsdf.of(surface, tracer.pigment(i, Vec3(px, py, pz), leaf), world.surface(i).ior)
           val base = 2 + Sampler.Dimensions * vertex
           vertex += 1
           if bounces >= tracer.depth then
@@ -189,38 +223,70 @@ object PathTracer:
               tr *= bsdf.transmit
               tg *= bsdf.transmit
               tb *= bsdf.transmit
-              ray = Ray(hit.point - hit.normal * Shading.Epsilon, ray.direction)
+              ox = px - nx * Shading.Epsilon
+              oy = py - ny * Shading.Epsilon
+              oz = pz - nz * Shading.Epsilon
             else going = false
           else
-            val normal = Shape.shadingNormal(shape, hit, ray)
-            val wi     = -ray.direction
+            val ix = -dx
+            val iy = -dy
+            val iz = -dz
             if bsdf.smooth && !emitters.isEmpty then
-              nextEvent(at, j, base, hit, normal, wi, bsdf, tr, tg, tb)
+              nextEvent(
+                at,
+                j,
+                base,
+                px,
+                py,
+                pz,
+                nx,
+                ny,
+                nz,
+                sx,
+                sy,
+                sz,
+                ix,
+                iy,
+                iz,
+                bsdf,
+                tr,
+                tg,
+                tb
+              )
             val uv      = sampler.pairAt(at, j, base + 4)
             val fresnel = if bsdf.glass then sampler.uniformAt(at, j, base + 7) else 0.0
             val choice  = sampler.uniformAt(at, j, base + 3)
-            val s       =
-              bsdf.sample(
-                normal,
-                wi,
-                hit.front,
-                choice,
-                Sampler.first(uv),
-                Sampler.second(uv),
-                fresnel
-              )
-            if s.absorbed then going = false
+            bsdf.sampleInto(
+              out,
+              sx,
+              sy,
+              sz,
+              ix,
+              iy,
+              iz,
+              front,
+              choice,
+              Sampler.first(uv),
+              Sampler.second(uv),
+              fresnel
+            )
+            if out.absorbed then going = false
             else
-              tr *= s.weight.r
-              tg *= s.weight.g
-              tb *= s.weight.b
-              val side = if s.transmitted then -Shading.Epsilon else Shading.Epsilon
-              ray = Ray(hit.point + hit.normal * side, s.direction)
-              if s.bounce then
+              tr *= out.wr
+              tg *= out.wg
+              tb *= out.wb
+              val side = if out.transmitted then -Shading.Epsilon else Shading.Epsilon
+              ox = px + nx * side
+              oy = py + ny * side
+              oz = pz + nz * side
+              dx = out.sx
+              dy = out.sy
+              dz = out.sz
+              if out.bounce then
                 bounces += 1
-                eta *= s.eta
-                lastDensity = s.density
-                lastPoint = ray.origin
+                eta *= out.eta
+                lastDensity = out.density
+                lx = ox; ly = oy; lz = oz
                 val most = Math.max(tr, Math.max(tg, tb))
                 if most <= 0 then going = false
                 else if bounces >= RouletteDepth then
@@ -231,42 +297,59 @@ object PathTracer:
                     tg /= survive
                     tb /= survive
 
-    /** Next-event estimation at a bounce: one emitter sampled, its light through the smooth
-      * lobes, weighted by the power heuristic against the lobes' own sampling, times the share
-      * of it that the shadow ray lets through; added to r, g, b.
+    /** Next-event estimation at a bounce at p (geometric normal n, shading normal s, ωi): one
+      * emitter sampled, its light through the smooth lobes, weighted by the power heuristic
+      * against the lobes' own sampling, times the share of it that the shadow ray lets through;
+      * added to r, g, b.
       */
     private def nextEvent(
         at: Long,
         j: Int,
         base: Int,
-        hit: Hit,
-        normal: Vec3,
-        wi: Vec3,
+        px: Double,
+        py: Double,
+        pz: Double,
+        nx: Double,
+        ny: Double,
+        nz: Double,
+        sx: Double,
+        sy: Double,
+        sz: Double,
+        ix: Double,
+        iy: Double,
+        iz: Double,
         bsdf: Bsdf,
         tr: Double,
         tg: Double,
         tb: Double
     ): Unit =
+      val out    = scratch
       val choice = sampler.uniformAt(at, j, base)
       val point  = sampler.pairAt(at, j, base + 1)
       // The smooth lobes reflect on the path's side only: the light is sought from S0, just off
       // the face's own plane on that side (as Whitted's shadow rays, so that a point light gives
       // exactly Whitted's direct light), and the shadow ray stops short of a glowing shape's
       // point so as not to meet that shape itself.
-      val from  = hit.point + hit.normal * Shading.Epsilon
-      val light = emitters.sample(from, choice, Sampler.first(point), Sampler.second(point))
-      if !light.dark then
-        val f = bsdf.evaluate(normal, wi, light.direction)
-        if f.max > 0 then
-          val reach =
-            if light.density == 0 || light.distance.isInfinite then light.distance
-            else light.distance - 2 * Shading.Epsilon
-          val share = visibility.along(from, light.direction, reach)
+      val fx = px + nx * Shading.Epsilon
+      val fy = py + ny * Shading.Epsilon
+      val fz = pz + nz * Shading.Epsilon
+      emitters.sampleInto(out, fx, fy, fz, choice, Sampler.first(point), Sampler.second(point))
+      if !out.isDark then
+        bsdf.evaluateInto(out, sx, sy, sz, ix, iy, iz, out.lx, out.ly, out.lz)
+        if Math.max(out.fr, Math.max(out.fg, out.fb)) > 0 then
+          val density = out.lightDensity
+          val reach   =
+            if density == 0 || out.distance.isInfinite then out.distance
+            else out.distance - 2 * Shading.Epsilon
+          val share = visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
           if share > 0 then
             val w =
-              if light.density == 0 then share
+              if density == 0 then share
               else
-                share * tracer.lightWeight(light.density, bsdf.density(normal, wi, light.direction))
-            r += tr * f.r * light.value.r * w
-            g += tg * f.g * light.value.g * w
-            b += tb * f.b * light.value.b * w
+                share * tracer.lightWeight(
+                  density,
+                  bsdf.densityAt(sx, sy, sz, ix, iy, iz, out.lx, out.ly, out.lz)
+                )
+            r += tr * out.fr * out.lr * w
+            g += tg * out.fg * out.lg * w
+            b += tb * out.fb * out.lb * w

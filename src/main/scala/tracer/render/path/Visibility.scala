@@ -28,51 +28,54 @@ final class Visibility(world: World, query: Query, clear: Boolean):
     * `reach` (+∞ for the sky).
     */
   def along(from: Vec3, direction: Vec3, reach: Double): Double =
-    if !clear then
-      if world.occludedAlong(
-          from.x,
-          from.y,
-          from.z,
-          direction.x,
-          direction.y,
-          direction.z,
-          reach,
-          query
-        )
-      then 0.0
-      else 1.0
-    else walk(from, direction, reach)
+    alongFrom(from.x, from.y, from.z, direction.x, direction.y, direction.z, reach)
+
+  /** [[along]] from (fx, fy, fz) along unit (dx, dy, dz). */
+  def alongFrom(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    if !clear then if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
+    else walk(fx, fy, fz, dx, dy, dz, reach)
 
   /** The walk from surface to surface for a world where some surface transmits.
     *
     * Perf: the walk's state in locals; the origin moves past each clear surface crossed.
     */
-  private def walk(from: Vec3, direction: Vec3, reach: Double): Double =
-    var origin = from
-    var left   = reach
-    var share  = 1.0
+  private def walk(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    var ox    = fx
+    var oy    = fy
+    var oz    = fz
+    var left  = reach
+    var share = 1.0
     while share > 0 && left > 0 do
-      val i = world.nearestAlong(
-        origin.x,
-        origin.y,
-        origin.z,
-        direction.x,
-        direction.y,
-        direction.z,
-        left,
-        query
-      )
+      val i = world.nearestAlong(ox, oy, oz, dx, dy, dz, left, query)
       val t = query.distance
       if i >= 0 && t < left then
         val leaf =
           if world.hasLeafSurfaces(i) then
-            Shape.hitAt(world.shape(i), Ray(origin, direction), t).leaf
+            Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
           else 0
         val surface = world.surface(i, leaf)
         val clear   = Math.abs(world.surface(i).ior - 1) < Refraction.SameIndex
         share = if clear then share * surface.transmit else 0.0
         val step = t + Shading.Epsilon
-        origin = origin + direction * step
+        ox = ox + dx * step
+        oy = oy + dy * step
+        oz = oz + dz * step
         left -= step
       else left = 0
     share
