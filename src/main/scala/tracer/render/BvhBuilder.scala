@@ -263,16 +263,16 @@ private[render] final class BvhBuilder private (
 private[render] object BvhBuilder:
   /** The builder over the shapes of `shapes` that have bounds (the others are left out). */
   def apply(shapes: IndexedSeq[Shape]): BvhBuilder =
-    // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
-    // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
     val boxLo  = new Array[Double](3 * shapes.length)
     val boxHi  = new Array[Double](3 * shapes.length)
     val centre = new Array[Double](3 * shapes.length)
     val found  = Array.newBuilder[Int]
-    // The shapes without bounds are collected on the same pass: Shape.bounds is asked once a shape.
+    // The shapes without bounds, collected on the same pass: Shape.bounds is asked once a shape.
     val without = Array.newBuilder[Int]
-    var i      = 0
-    var k      = 0
+    // Perf: the shapes with bounds, their boxes written as they are found, so no Bounds outlives
+    // its shape's turn (a million-triangle mesh kept 140 MB of them alive; docs/performance.md).
+    var i = 0
+    var k = 0
     while i < shapes.length do
       Shape.bounds(shapes(i)) match
         case Some(b) =>
