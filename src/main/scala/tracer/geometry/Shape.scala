@@ -735,14 +735,17 @@ object Shape:
     val u  = (tr.bb * qa - tr.ab * qb) / tr.denominator
     (u, (qb - u * tr.ab) / tr.bb)
 
-  /** Equations 35–38 with rn the outward unit normal; arccos arguments clamped against rounding. */
+  /** Equations 35–38 with rn the outward unit normal; arccos arguments clamped against rounding.
+    * `StrictMath`'s arccos and sine, so a texture is looked up at the same texel on every machine
+    * (`Math.sin` may be a processor's own).
+    */
   private def sphereCoordinates(s: Sphere, point: Vec3): SurfaceCoordinates =
     val rn  = (point - s.centre) * (1 / s.radius)
-    val phi = Math.acos(clamp(-rn.dot(s.unitPole)))
+    val phi = StrictMath.acos(clamp(-rn.dot(s.unitPole)))
     val v   = phi / Math.PI
     if v == 0 || v == 1 then SurfaceCoordinates(0, v)
     else
-      val theta = Math.acos(clamp(s.unitEquator.dot(rn) / Math.sin(phi))) / (2 * Math.PI)
+      val theta = StrictMath.acos(clamp(s.unitEquator.dot(rn) / StrictMath.sin(phi))) / (2 * Math.PI)
       SurfaceCoordinates(if s.seamSide.dot(rn) > 0 then theta else 1 - theta, v)
 
   private def startsInside(s: Sphere, ray: Ray): Boolean =

@@ -13,11 +13,12 @@ enum Encoding:
   /** The sRGB transfer function (`-g srgb`, POV-Ray's `File_Gamma=sRGB`). */
   case Srgb
 
-  /** One channel value in 0..1, encoded. */
+  /** One channel value in 0..1, encoded; with `StrictMath.pow`, the same bits on every machine. */
   def encode(c: Double): Double = this match
     case Linear       => c
-    case Power(gamma) => Math.pow(c, 1 / gamma)
-    case Srgb         => if c <= 0.0031308 then 12.92 * c else 1.055 * Math.pow(c, 1 / 2.4) - 0.055
+    case Power(gamma) => StrictMath.pow(c, 1 / gamma)
+    case Srgb         =>
+      if c <= 0.0031308 then 12.92 * c else 1.055 * StrictMath.pow(c, 1 / 2.4) - 0.055
 
   /** A colour brought into range (hue kept), then encoded channel by channel. */
   def encode(colour: Colour): Colour = this match

@@ -36,4 +36,4 @@ private[io] object VertexNormals:
     sums(3 * v + 2) = sums(3 * v + 2) + w.z
 
   /** The angle between two non-zero vectors, in radians (atan2 form: accurate near 0 and π). */
-  private def angle(u: Vec3, v: Vec3): Double = Math.atan2(u.cross(v).length, u.dot(v))
+  private def angle(u: Vec3, v: Vec3): Double = StrictMath.atan2(u.cross(v).length, u.dot(v))

@@ -85,7 +85,7 @@ object Transform:
   /** A turn by `degrees` in the plane of axes `a` and `b`, taking a towards b. */
   private def axis(a: Int, b: Int, degrees: Double): Transform =
     val radians            = Math.toRadians(degrees)
-    val (s, c)             = (Math.sin(radians), Math.cos(radians))
+    val (s, c)             = (StrictMath.sin(radians), StrictMath.cos(radians))
     def turn(sine: Double) =
       IArray.tabulate(9) { k =>
         val (row, column) = (k / 3, k % 3)

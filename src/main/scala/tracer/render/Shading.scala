@@ -347,7 +347,7 @@ object Shading:
         val k   = 2 * (nx * dx + ny * dy + nz * dz)
         val cos = (dx - nx * k) * lx + (dy - ny * k) * ly + (dz - nz * k) * lz
         if cos > 0 && (surface.phongSize < 60 || cos > 0.0008) then
-          surface.phong * Math.pow(cos, surface.phongSize)
+          surface.phong * StrictMath.pow(cos, surface.phongSize)
         else 0.0
     val specular =
       if surface.specular <= 0 then 0.0
@@ -358,5 +358,5 @@ object Shading:
         val hz     = (lz - dz) * 0.5
         val length = Math.sqrt(hx * hx + hy * hy + hz * hz)
         val cos    = if length > 0 then (hx * nx + hy * ny + hz * nz) / length else 0.0
-        if cos > 0 then surface.specular * Math.pow(cos, 1 / surface.roughness) else 0.0
+        if cos > 0 then surface.specular * StrictMath.pow(cos, 1 / surface.roughness) else 0.0
     phong + specular
