@@ -745,7 +745,8 @@ object Shape:
     val v   = phi / Math.PI
     if v == 0 || v == 1 then SurfaceCoordinates(0, v)
     else
-      val theta = StrictMath.acos(clamp(s.unitEquator.dot(rn) / StrictMath.sin(phi))) / (2 * Math.PI)
+      val theta =
+        StrictMath.acos(clamp(s.unitEquator.dot(rn) / StrictMath.sin(phi))) / (2 * Math.PI)
       SurfaceCoordinates(if s.seamSide.dot(rn) > 0 then theta else 1 - theta, v)
 
   private def startsInside(s: Sphere, ray: Ray): Boolean =

@@ -4,9 +4,12 @@ import tracer.math.Vec3
 
 /** A mesh's placement: p ↦ T(Rz(Ry(Rx(scale·p)))), angles in degrees, as POV-Ray's `rotate`. */
 private[io] final case class MeshTransform(scale: Double, degrees: Vec3, translation: Vec3):
-  private val (sx, cx) = (StrictMath.sin(Math.toRadians(degrees.x)), StrictMath.cos(Math.toRadians(degrees.x)))
-  private val (sy, cy) = (StrictMath.sin(Math.toRadians(degrees.y)), StrictMath.cos(Math.toRadians(degrees.y)))
-  private val (sz, cz) = (StrictMath.sin(Math.toRadians(degrees.z)), StrictMath.cos(Math.toRadians(degrees.z)))
+  private val (sx, cx) =
+    (StrictMath.sin(Math.toRadians(degrees.x)), StrictMath.cos(Math.toRadians(degrees.x)))
+  private val (sy, cy) =
+    (StrictMath.sin(Math.toRadians(degrees.y)), StrictMath.cos(Math.toRadians(degrees.y)))
+  private val (sz, cz) =
+    (StrictMath.sin(Math.toRadians(degrees.z)), StrictMath.cos(Math.toRadians(degrees.z)))
 
   /** The placed point. */
   def apply(p: Vec3): Vec3 = turn(p * scale) + translation
