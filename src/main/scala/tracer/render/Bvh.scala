@@ -66,10 +66,29 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
     var face = -1
-    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var sp =
         if wide.size == 0 then 0
-        else push(0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, bestT, ordered = true)
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            ordered = true
+          )
       while sp > 0 do
         sp -= 1
         val slot = stack(sp)
@@ -89,7 +108,9 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
                   face = query.meshFace
               k += 1
           else
-            sp = push(
+            sp = WideWalk.push(
+              wb,
+              wn,
               wc(slot),
               sp,
               stack,
@@ -127,11 +148,30 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
     val stack   = query.nodes
     val entries = query.entries
-    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  =
         if wide.size == 0 then 0
-        else push(0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit, ordered = false)
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)
@@ -143,7 +183,9 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
             k += 1
         else
-          sp = push(
+          sp = WideWalk.push(
+            wb,
+            wn,
             wc(slot),
             sp,
             stack,
@@ -162,80 +204,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
           )
       hit
     }
-
-  /** Pushes the slots of wide node `node` whose boxes the ray enters before `limit` onto the
-    * stack above `sp`, with their entry distances; `ordered`: the farthest first, so the nearest
-    * is popped next. Returns the new stack size.
-    */
-  private inline def push(
-      node: Int,
-      sp: Int,
-      stack: Array[Int],
-      entries: Array[Double],
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      ix: Double,
-      iy: Double,
-      iz: Double,
-      sx: Int,
-      sy: Int,
-      sz: Int,
-      limit: Double,
-      inline ordered: Boolean
-  ): Int =
-    // Why: the stack top moves as slots are pushed; an insertion sort keeps them farthest first.
-    var top = sp
-    var c   = 0
-    while c < WideTree.Width do
-      val slot = WideTree.Width * node + c
-      if wn(slot) >= 0 then
-        val t = wideEntry(24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
-        if t < Double.PositiveInfinity then
-          var j = top
-          if ordered then
-            while j > sp && entries(j - 1) < t do
-              stack(j) = stack(j - 1); entries(j) = entries(j - 1)
-              j -= 1
-          stack(j) = slot; entries(j) = t
-          top += 1
-      c += 1
-    top
-
-  /** The distance at which the ray enters the float box at `b` (a child's low x; its other
-    * coordinates 4 floats apart), or +∞ when it misses it before `limit`: the slab test of
-    * [[entry]], on the float box widened to double (exactly), near planes chosen by `sx` etc.
-    * (0 for the low side, 3 for the high: 4 × that floats on).
-    */
-  private inline def wideEntry(
-      b: Int,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      ix: Double,
-      iy: Double,
-      iz: Double,
-      sx: Int,
-      sy: Int,
-      sz: Int,
-      limit: Double
-  ): Double =
-    // Perf: as entry, on four floats apart: no box object, local doubles narrowed in place.
-    var tmin = 0.0
-    var tmax = limit
-    val nx   = (wb(b + 4 * sx).toDouble - ox) * ix
-    val fx   = (wb(b + 12 - 4 * sx).toDouble - ox) * ix
-    if nx > tmin then tmin = nx
-    if fx < tmax then tmax = fx
-    val ny = (wb(b + 4 + 4 * sy).toDouble - oy) * iy
-    val fy = (wb(b + 16 - 4 * sy).toDouble - oy) * iy
-    if ny > tmin then tmin = ny
-    if fy < tmax then tmax = fy
-    val nz = (wb(b + 8 + 4 * sz).toDouble - oz) * iz
-    val fz = (wb(b + 20 - 4 * sz).toDouble - oz) * iz
-    if nz > tmin then tmin = nz
-    if fz < tmax then tmax = fz
-    if tmin <= tmax then tmin else Double.PositiveInfinity
 
   /** [[nearest]] on the binary tree the wide one was collapsed from: the same answers, kept to
     * measure what the wide tree gains (`WorldBench`).
@@ -260,7 +228,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
     var face = -1
-    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var sp = 0
       val t0 =
         if tree.size == 0 then Double.PositiveInfinity
@@ -319,7 +287,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Perf: any hit will do, so no ordering and an early exit (shadow rays); children are tested
     // before they are pushed, so a popped node is never tested twice.
     val stack = query.nodes
-    walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  = 0
       if tree.size > 0 && entry(
@@ -356,27 +324,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             stack(sp) = left + 1; sp += 1
       hit
     }
-
-  /** Runs `body` on the ray's inverse direction and, per axis, the offset (0 or 3) of a box's
-    * near corner within its six doubles.
-    *
-    * Perf: `inline` with an inline function: the lambda's body is spliced in, so there is no tuple
-    * or object to allocate (a tuple of doubles is boxed) and no call.
-    */
-  private inline def walk[A](dx: Double, dy: Double, dz: Double)(
-      inline body: (Double, Double, Double, Int, Int, Int) => A
-  ): A =
-    val ix = 1 / dx
-    val iy = 1 / dy
-    val iz = 1 / dz
-    body(
-      ix,
-      iy,
-      iz,
-      if ix >= 0 then 0 else 3,
-      if iy >= 0 then 0 else 3,
-      if iz >= 0 then 0 else 3
-    )
 
   /** The distance at which a ray enters node `n`'s box, or +∞ when it misses it before `limit`.
     *
