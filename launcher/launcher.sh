@@ -151,8 +151,8 @@ tracer_cache_dirs() {
 # missing. On JDK 25 and newer the cache is an AOT cache (JEP 483/514/515: classes loaded and
 # linked, and method profiles, from a training run); on 17 to 24 an AppCDS archive of the
 # classes the training run loaded. Its file name holds what it depends on (the Java's version
-# and path, the JVM's options, the jar's size and time), so a changed jar or Java finds no file
-# and makes a new one, and the old one of that Java is deleted. A cache that cannot be made is
+# and path, the JVM's options, the jar's size and time, the training scenes), so a changed jar,
+# Java or training scene finds no file and makes a new one, and the old one of that Java is deleted. A cache that cannot be made is
 # remembered (a .failed file of the same name), so a failing training run is not repeated on
 # every start. Nothing here ever stops a render: on any failure the flags stay empty, and the
 # JVM is told to use a cache only if it can (-Xshare:auto, AOTMode auto) and to say nothing.
@@ -167,7 +167,7 @@ tracer_cache() {
   local stamp key name dir file
   stamp=$(stat -L -c '%s-%Y' -- "$jar" 2>/dev/null) || return 0
   key=$(tracer_cksum "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}")
-  name="tracer-java$tracer_java_version-$key-jar$stamp.$kind"
+  name="tracer-java$tracer_java_version-$key-jar$stamp-training$(tracer_training_stamp "$@").$kind"
   local dirs=() line
   while IFS= read -r line; do dirs+=("$line"); done < <(tracer_cache_dirs "$jar")
   # A cache already made in any of the places is used as it is.
@@ -187,6 +187,16 @@ tracer_cache() {
       return 0
     fi
   done
+}
+
+# tracer_training_stamp TRAINING_DIR...: a short number for the training scenes (each one's path,
+# size and time), so that changed training scenes make a new cache as a changed jar does.
+tracer_training_stamp() {
+  local dir listing=''
+  for dir in "$@"; do
+    listing+=$(stat -L -c '%n %s %Y' -- "$dir"/*.xml "$dir"/path/*.xml 2>/dev/null)
+  done
+  tracer_cksum "$listing"
 }
 
 # tracer_cache_use KIND FILE: sets tracer_cache_flags to use FILE quietly, if it can be used.

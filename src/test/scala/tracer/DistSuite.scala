@@ -15,9 +15,10 @@ import tracer.testkit.Processes.{Exit, run}
   */
 class DistSuite extends munit.FunSuite:
 
-  // The cache test trains the launcher's start-up cache twice (a new jar makes a new one), each a
-  // render of every training scene: on a busy two-core machine that outlasts munit's 30 seconds.
-  override val munitTimeout = scala.concurrent.duration.Duration(3, "min")
+  // The cache test trains the launcher's start-up cache three times (a new jar and new training
+  // scenes each make a new one), each a render of every training scene: on a busy two-core
+  // machine that outlasts munit's 30 seconds.
+  override val munitTimeout = scala.concurrent.duration.Duration(5, "min")
 
   private val home    = Path.of("").toAbsolutePath
   private val version = BuildInfo.version
@@ -106,7 +107,8 @@ class DistSuite extends munit.FunSuite:
 
   work.test(
     "bin/tracer, read-only and from another directory under an empty HOME, renders the bytes of " +
-      "./tracer, keeps its cache in the user's cache directory, and survives a broken or stale cache"
+      "./tracer, keeps its cache in the user's cache directory, survives a broken or stale cache, " +
+      "and makes a new one for new training scenes"
   ): d =>
     val top       = unpack(d)
     val expected  = reference(d, 64)
@@ -163,6 +165,15 @@ class DistSuite extends munit.FunSuite:
     val remade = caches(user)
     assertEquals(remade.length, 1, s"$remade")
     assertNotEquals(remade, made)
+
+    // So does a changed training scene (here: another time on one of them).
+    val scene = top.resolve("lib/training/triangles-1000.xml")
+    assert(Files.exists(scene), s"$scene is missing")
+    Files.setLastModifiedTime(scene, java.nio.file.attribute.FileTime.fromMillis(86_400_000L))
+    render("new-training.png")
+    val retrained = caches(user)
+    assertEquals(retrained.length, 1, s"$retrained")
+    assertNotEquals(retrained, remade)
 
   test("the .deb depends on a Java runtime >= 17 and installs tracer, its man page and its docs"):
     assume(Files.exists(deb), s"$deb is missing: run ./sbt dist")
