@@ -10,11 +10,23 @@ import tracer.scene.Scene
   */
 private[cli] object Inputs:
 
-  /** The scene, from `-i FILE` or standard input, with its textures and meshes; warnings to `err`. */
-  def scene(options: Options, in: InputStream, err: PrintStream, cwd: Path): Either[String, Scene] =
+  /** The scene, from `-i FILE` or standard input, with its textures and meshes (those of `reuse`
+    * while their files are unchanged, in a batch); warnings to `err`.
+    */
+  def scene(
+      options: Options,
+      in: InputStream,
+      err: PrintStream,
+      cwd: Path,
+      reuse: Option[SceneSources.Reuse] = None
+  ): Either[String, Scene] =
     sceneBytes(options.input, in, cwd).flatMap { (bytes, where) =>
+      val warn: String => Unit = w => err.println(s"tracer: warning: $w")
+      val sources              = reuse.fold(SceneSources.files(where, warn))(
+        SceneSources.reusing(where, _, warn)
+      )
       SceneXml
-        .parse(bytes, SceneSources.files(where, w => err.println(s"tracer: warning: $w")))
+        .parse(bytes, sources)
         .left
         .map(e => s"scene: ${e.describe}")
     }

@@ -4,7 +4,7 @@ import java.io.{InputStream, PrintStream}
 import java.nio.file.Path
 import scala.util.control.NonFatal
 import tracer.image.{Bitmap, ImageFile, ImageFormat}
-import tracer.io.{Images, OutputFile}
+import tracer.io.{Images, OutputFile, SceneSources}
 import tracer.render.{CameraConfig, Film, Integrator, Renderer, SamplerKind, ShadingMode}
 import tracer.scene.Scene
 
@@ -80,7 +80,8 @@ object Main:
       options: Options,
       in: InputStream,
       err: PrintStream,
-      cwd: Path
+      cwd: Path,
+      reuse: Option[SceneSources.Reuse] = None
   ): Either[Problem, Long] =
     def failure(message: String) = Problem(Failure, message)
     val output                   = cwd.resolve(options.output)
@@ -88,7 +89,7 @@ object Main:
     for
       _     <- floatWithoutEncoding(options, format)
       _     <- OutputFile.checkWritable(output).left.map(failure)
-      scene <- Inputs.scene(options, in, err, cwd).left.map(failure)
+      scene <- Inputs.scene(options, in, err, cwd, reuse).left.map(failure)
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)
@@ -120,7 +121,9 @@ object Main:
     * (with `-R a:b` when its line gives rows) and `options`, then the line's own options; with
     * `-t`, prints
     * `Tracetime: N ms OUTPUT` for each. A frame that fails is
-    * reported as `tracer: SCENE: why` and the others go on; the status is 1 if any failed.
+    * reported as `tracer: SCENE: why` and the others go on; the status is 1 if any failed. A
+    * texture or mesh file that the frame before also used is not read again while it is unchanged
+    * ([[tracer.io.FileReuse]]).
     */
   private def batch(
       options: Options,
@@ -136,7 +139,9 @@ object Main:
       source <- text
       frames <- Batch.parse(source).left.map(why => s"batch list $list: $why")
     yield
+      val reuse  = SceneSources.Reuse()
       val failed = frames.count { frame =>
+        reuse.nextFrame()
         val placed = options.copy(
           input = Some(frame.scene),
           output = frame.output,
@@ -149,7 +154,7 @@ object Main:
               .forFrame(placed, frame.options)
               .left
               .map(why => Problem(UsageError, s"line ${frame.line}: $why"))
-        one.flatMap(render(_, in, err, cwd)) match
+        one.flatMap(render(_, in, err, cwd, Some(reuse))) match
           case Right(millis) =>
             if options.timing then out.println(s"Tracetime: $millis ms ${frame.output}")
             false

@@ -137,6 +137,13 @@ object Bitmap:
       .foreach((band, at) => System.arraycopy(band.samples, 0, samples, at, band.samples.length))
     new Bitmap(first.width, height.toInt, first.maxval, samples)
 
+  /** A bitmap on `samples`, which the caller hands over (and must not change afterwards): the
+    * codecs' way to make one without copying. Every sample must be at most `maxval`.
+    */
+  private[image] def owning(width: Int, height: Int, maxval: Int, samples: Array[Char]): Bitmap =
+    require(samples.length == allocate(width, height, maxval).length, "wrong number of samples")
+    new Bitmap(width, height, maxval, samples)
+
   /** The raw samples, for the codecs in this package; callers must not change them. */
   private[image] def samplesOf(bitmap: Bitmap): Array[Char] = bitmap.samples
 

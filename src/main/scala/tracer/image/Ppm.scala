@@ -110,14 +110,19 @@ private final class PpmReader(bytes: Array[Byte]):
         s"expected $needed bytes of pixel data after the header, found ${bytes.length - pos} (truncated file)"
       )
     val start   = pos
-    val samples = Array.tabulate(3 * width * height) { i =>
-      if bytesPerSample == 1 then bytes(start + i) & 0xff
-      else ((bytes(start + 2 * i) & 0xff) << 8) | (bytes(start + 2 * i + 1) & 0xff)
-    }
-    samples.indices.find(i => samples(i) > maxval).foreach { i =>
-      fail(s"sample ${i + 1} ${pixelOf(i, width)} is ${samples(i)}, above the maxval $maxval")
-    }
-    Bitmap.fromSamples(width, height, maxval, samples.toIndexedSeq)
+    val count   = 3 * width * height
+    val samples = new Array[Char](count)
+    // Perf: one pass of primitive loads into the bitmap's own array: a texture is decoded before
+    // every render, mostly in the interpreter (docs/performance.md, round 7: the movie).
+    var i = 0
+    while i < count do
+      val s =
+        if bytesPerSample == 1 then bytes(start + i) & 0xff
+        else ((bytes(start + 2 * i) & 0xff) << 8) | (bytes(start + 2 * i + 1) & 0xff)
+      if s > maxval then fail(s"sample ${i + 1} ${pixelOf(i, width)} is $s, above the maxval $maxval")
+      samples(i) = s.toChar
+      i += 1
+    Bitmap.owning(width, height, maxval, samples)
 
   private def asciiRaster(width: Int, height: Int, maxval: Int): Bitmap =
     val count = 3 * width * height
@@ -126,8 +131,9 @@ private final class PpmReader(bytes: Array[Byte]):
       fail(
         s"expected $count samples after the header, but the file is too short to hold them (truncated file)"
       )
-    // Perf: one pass over the samples into a flat array (a 4K ASCII picture has 25 million).
-    val samples = new Array[Int](count)
+    // Perf: one pass over the samples into the bitmap's own array (a 4K ASCII picture has 25
+    // million).
+    val samples = new Array[Char](count)
     var i       = 0
     while i < count do
       val before = pos
@@ -141,9 +147,9 @@ private final class PpmReader(bytes: Array[Byte]):
         fail(s"sample ${i + 1} ${pixelOf(i, width)} is $s, above the maxval $maxval ${where(pos)}")
       if pos < bytes.length && !isSpace(bytes(pos)) && bytes(pos) != '#' then
         fail(s"expected whitespace after sample ${i + 1} ${where(pos)}, found ${shown(pos)}")
-      samples(i) = s
+      samples(i) = s.toChar
       i += 1
-    Bitmap.fromSamples(width, height, maxval, samples.toIndexedSeq)
+    Bitmap.owning(width, height, maxval, samples)
 
   // Perf: byte loops that move the cursor, no slices or strings.
   private def skipSpaceAndComments(): Unit =

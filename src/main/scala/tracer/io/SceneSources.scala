@@ -1,6 +1,7 @@
 package tracer.io
 
 import java.nio.file.Path
+import tracer.image.Texels
 
 /** Where a scene's textures and meshes come from, and where warnings about them go.
   *
@@ -19,3 +20,26 @@ object SceneSources:
   /** Files relative to `base`, warnings to `warn`. */
   def files(base: Path, warn: String => Unit = _ => ()): SceneSources =
     SceneSources(TextureFiles.loader(base), MeshFiles.loader(base), warn)
+
+  /** [[files]], each texture and mesh taken from `reuse` while its file is unchanged (a batch's
+    * frames share them).
+    */
+  def reusing(base: Path, reuse: Reuse, warn: String => Unit): SceneSources =
+    SceneSources(
+      name => reuse.textures(base.resolve(name))(TextureFiles.readTexels),
+      name => reuse.meshes(base.resolve(name))(ObjReader.read(_, name)),
+      warn
+    )
+
+  /** What the frames of one batch share: their decoded textures and read meshes. */
+  final class Reuse:
+    /** The textures kept. */
+    val textures: FileReuse[Texels] = FileReuse()
+
+    /** The meshes kept. */
+    val meshes: FileReuse[ObjMesh] = FileReuse()
+
+    /** Starts the next frame (see [[FileReuse.nextFrame]]). */
+    def nextFrame(): Unit =
+      textures.nextFrame()
+      meshes.nextFrame()

@@ -151,8 +151,10 @@ class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
     assertEquals(Files.readString(d.resolve("out.png")), "old")
 
   dir.test("--batch renders every frame of a list in one run, each exactly as a separate run"): d =>
-    // Scenes in other directories, with textures and meshes relative to them; -a and -t.
-    val frames = List("textures.xml", "meshes.xml", "materials.xml", "textures.xml")
+    // Scenes in other directories, with textures and meshes relative to them (kept for the next
+    // frame, and read again after a frame without them); -a and -t.
+    val frames =
+      List("textures.xml", "textures.xml", "meshes.xml", "meshes.xml", "materials.xml", "textures.xml")
     val list   = frames.zipWithIndex
       .map((scene, i) => s"${scenes.resolve(scene)}\tframe $i.png")
       .mkString("# frames\n\n", "\n", "\n")
@@ -161,7 +163,7 @@ class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
     assertEquals(r.status, 0, r.err)
     assertEquals(r.err, "")
     val times = r.out.linesIterator.toList
-    assertEquals(times.length, 4, r.out)
+    assertEquals(times.length, frames.length, r.out)
     for (scene, i) <- frames.zipWithIndex do
       assert(times(i).matches(s"Tracetime: \\d+ ms frame $i\\.png"), times(i))
       run(d, "-x", "40", "-a", "2", "-i", scenes.resolve(scene).toString, s"single $i.png")(): Unit
