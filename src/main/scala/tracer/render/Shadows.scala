@@ -201,10 +201,11 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     var j     = 0
     while j < inBeam do
       val i = beam(j)
-      val t = Primitives.distance(world.each, i, bestT, ox, oy, oz, dx, dy, dz, query)
-      if t < bestT || (t == bestT && t < Double.PositiveInfinity && best < 0) then
-        bestT = t
-        best = i
+      if enters(i, ox, oy, oz, dx, dy, dz, bestT) then
+        val t = Primitives.distance(world.each, i, bestT, ox, oy, oz, dx, dy, dz, query)
+        if t < bestT || (t == bestT && t < Double.PositiveInfinity && best < 0) then
+          bestT = t
+          best = i
       j += 1
     query.distance = if best < 0 then Double.PositiveInfinity else bestT
     best
@@ -221,9 +222,58 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   ): Boolean =
     // Perf: as nearestInBeam, stopping at the first blocker.
     var j = 0
-    while j < inBeam && !Primitives.blocks(world.each, beam(j), limit, ox, oy, oz, dx, dy, dz, query)
+    while j < inBeam && !(enters(beam(j), ox, oy, oz, dx, dy, dz, limit) &&
+        Primitives.blocks(world.each, beam(j), limit, ox, oy, oz, dx, dy, dz, query))
     do j += 1
     j < inBeam
+
+  /** False when the ray cannot meet shape `i` at t ≤ `limit`: for a shape of the general route
+    * or a mesh, its widened box missed (the slab test; NaN from an origin on a slab's plane
+    * counts as inside); the fast shapes' own tests are as quick, so they are always tried.
+    */
+  private inline def enters(
+      i: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double
+  ): Boolean =
+    val kind = world.each.kind(i)
+    if kind == Primitives.SphereKind || kind == Primitives.TriangleKind || kind == Primitives.PlaneKind
+    then true
+    else
+      val b  = world.boxes
+      val at = 6 * i
+      if b(at).isNaN then true
+      else
+        val ix = 1 / dx
+        val iy = 1 / dy
+        val iz = 1 / dz
+        val ax = (b(at) - ox) * ix
+        val bx = (b(at + 3) - ox) * ix
+        val ay = (b(at + 1) - oy) * iy
+        val by = (b(at + 4) - oy) * iy
+        val az = (b(at + 2) - oz) * iz
+        val bz = (b(at + 5) - oz) * iz
+        // Why: the ray's interval inside the box, narrowed axis by axis (NaN leaves it alone).
+        var near = 0.0
+        var far  = limit
+        val nx   = Math.min(ax, bx)
+        val fx   = Math.max(ax, bx)
+        if nx > near then near = nx
+        if fx < far then far = fx
+        val ny = Math.min(ay, by)
+        val fy = Math.max(ay, by)
+        if ny > near then near = ny
+        if fy < far then far = fy
+        val nz = Math.min(az, bz)
+        val fz = Math.max(az, bz)
+        if nz > near then near = nz
+        if fz < far then far = fz
+        near <= far
 
   /** Aims the beam from (fx, fy, fz) at the sub-lights `positions` of `light`: keeps in
     * [[beam]] the shapes that a segment from the point to a sub-light may meet.

@@ -61,15 +61,18 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
     if beams then Primitives(shapes.toIndexedSeq, shapes.indices.toArray)
     else Primitives(IndexedSeq.empty, Array.emptyIntArray)
 
-  // Perf: each shape's box for the beams, lo then hi at 6i; a shape without bounds has NaN (a
+  // Perf: each shape's box for the beams, lo then hi at 6i, widened by 10⁻⁷ of its coordinates'
+  // size (as the tree rounds its boxes outwards to floats); a shape without bounds has NaN (a
   // plane is then tested by its side, anything else always kept).
   private[render] val boxes: Array[Double] =
     if !beams then Array.emptyDoubleArray
     else
       shapes.flatMap(s =>
-        Shape.bounds(s).fold(Array.fill(6)(Double.NaN))(b =>
-          Array(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z)
-        )
+        Shape.bounds(s).fold(Array.fill(6)(Double.NaN)) { b =>
+          val size = 1 + Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z).map(Math.abs).max
+          val m    = 1e-7 * size
+          Array(b.lo.x - m, b.lo.y - m, b.lo.z - m, b.hi.x + m, b.hi.y + m, b.hi.z + m)
+        }
       )
 
   /** The number of shapes. */
