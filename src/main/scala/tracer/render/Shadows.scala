@@ -126,8 +126,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       reach: Double
   ): Double =
     if inBeam >= 0 then
-      if !world.transmits then
-        if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
+      if !world.transmits then if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
       else walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
     else if !world.transmits then
       if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
@@ -383,13 +382,13 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
           !(above || below)
         case _ => true
     else
-      val cx    = (lox + b(at + 3)) * 0.5
-      val cy    = (b(at + 1) + b(at + 4)) * 0.5
-      val cz    = (b(at + 2) + b(at + 5)) * 0.5
-      val hx    = (b(at + 3) - lox) * 0.5
-      val hy    = (b(at + 4) - b(at + 1)) * 0.5
-      val hz    = (b(at + 5) - b(at + 2)) * 0.5
-      val size  = 1 + scale + Math.abs(cx) + Math.abs(cy) + Math.abs(cz) + hx + hy + hz
+      val cx   = (lox + b(at + 3)) * 0.5
+      val cy   = (b(at + 1) + b(at + 4)) * 0.5
+      val cz   = (b(at + 2) + b(at + 5)) * 0.5
+      val hx   = (b(at + 3) - lox) * 0.5
+      val hy   = (b(at + 4) - b(at + 1)) * 0.5
+      val hz   = (b(at + 5) - b(at + 2)) * 0.5
+      val size = 1 + scale + Math.abs(cx) + Math.abs(cy) + Math.abs(cz) + hx + hy + hz
       // Perf: the seven axes in a plain loop, stopping at the first that separates.
       var meets = true
       var a     = 0

@@ -8,7 +8,13 @@ import org.scalacheck.Prop.forAll
 class ByteLevelsProperties extends ScalaCheckSuite:
 
   private val encodings =
-    List(Encoding.Srgb, Encoding.Power(2.2), Encoding.Power(1.8), Encoding.Power(0.45), Encoding.Power(3))
+    List(
+      Encoding.Srgb,
+      Encoding.Power(2.2),
+      Encoding.Power(1.8),
+      Encoding.Power(0.45),
+      Encoding.Power(3)
+    )
 
   private def direct(e: Encoding, c: Double) = Colour.quantise(e.encode(c), 255)
 
@@ -26,7 +32,9 @@ class ByteLevelsProperties extends ScalaCheckSuite:
   /** The doubles within `n` ulps of c. */
   private def around(c: Double, n: Int): Iterator[Double] =
     val bits = java.lang.Double.doubleToRawLongBits(c)
-    (-n to n).iterator.map(i => java.lang.Double.longBitsToDouble(bits + i)).filter(x => x >= 0 && x <= 1)
+    (-n to n).iterator
+      .map(i => java.lang.Double.longBitsToDouble(bits + i))
+      .filter(x => x >= 0 && x <= 1)
 
   test("the gallery's encodings are tabled"):
     encodings.foreach(e => assert(ByteLevels(e).tabled, e.toString))
@@ -36,7 +44,9 @@ class ByteLevelsProperties extends ScalaCheckSuite:
     encodings.foreach { e =>
       val levels = ByteLevels(e)
       (1 to 255).foreach { k =>
-        around(step(e, k), 1000).foreach(c => assertEquals(levels.sample(c), direct(e, c), s"$e $k $c"))
+        around(step(e, k), 1000).foreach(c =>
+          assertEquals(levels.sample(c), direct(e, c), s"$e $k $c")
+        )
       }
     }
 
@@ -49,7 +59,17 @@ class ByteLevelsProperties extends ScalaCheckSuite:
   test("the ends, the smallest values and what is not in range"):
     encodings.foreach { e =>
       val levels = ByteLevels(e)
-      List(0.0, -0.0, Double.MinPositiveValue, 1e-300, 1e-12, 0.5, 1.0, Math.nextDown(1.0), Double.NaN)
+      List(
+        0.0,
+        -0.0,
+        Double.MinPositiveValue,
+        1e-300,
+        1e-12,
+        0.5,
+        1.0,
+        Math.nextDown(1.0),
+        Double.NaN
+      )
         .foreach(c => assertEquals(levels.sample(c), direct(e, c), s"$e $c"))
       (0 to 255).foreach(k => assertEquals(levels.sample(k / 255.0), direct(e, k / 255.0)))
     }

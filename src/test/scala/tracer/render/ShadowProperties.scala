@@ -3,7 +3,18 @@ package tracer.render
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Box, Csg, CsgOperation, Cylinder, Placed, Plane, Shape, Sphere, Torus, Triangle}
+import tracer.geometry.{
+  Box,
+  Csg,
+  CsgOperation,
+  Cylinder,
+  Placed,
+  Plane,
+  Shape,
+  Sphere,
+  Torus,
+  Triangle
+}
 import tracer.math.{Placement, Vec3}
 import tracer.scene.{AreaLight, Camera, Light, Scene, SceneObject, Surface}
 import tracer.testkit.Generators.*
@@ -34,7 +45,8 @@ class ShadowProperties extends ScalaCheckSuite:
   )
 
   // A transmit of 0 (opaque) or a share let through, 1 (a clear pane) included.
-  private val transmit = Gen.frequency(3 -> Gen.const(0.0), 2 -> Gen.choose(0.1, 0.95), 1 -> Gen.const(1.0))
+  private val transmit =
+    Gen.frequency(3 -> Gen.const(0.0), 2 -> Gen.choose(0.1, 0.95), 1 -> Gen.const(1.0))
 
   private val plain: Gen[SceneObject] =
     for s <- shape; t <- transmit yield SceneObject(s, Surface(transmit = t))
