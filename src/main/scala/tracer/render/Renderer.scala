@@ -3,7 +3,7 @@ package tracer.render
 import java.util.concurrent.{Executors, ThreadFactory}
 import scala.concurrent.duration.Duration
 import scala.concurrent.{Await, ExecutionContext, Future}
-import tracer.image.{Bitmap, Colour, Encoding, PixelWriter, Raster}
+import tracer.image.{Bitmap, ByteLevels, Colour, Encoding, PixelWriter, Raster}
 import tracer.render.path.PathTracer
 import tracer.scene.Scene
 
@@ -123,6 +123,9 @@ object Renderer:
       n: Int
   ) extends Frame:
     private val offsets = Renderer.sampleOffsets(n).toArray
+    // The 8-bit samples of the encoding, shared by the rows (the picture is a bitmap of maxval
+    // 255: Bitmap.byRows).
+    private val levels = ByteLevels(config.encoding)
 
     def row(at: Int, y: Int, out: PixelWriter): Unit =
       val shading  = Shading(world, mode)
@@ -134,9 +137,10 @@ object Renderer:
           encoding match
             case Encoding.Linear => out.put(x, at, r, g, b)
             case _               =>
-              // Encoding.encode(colour): brought into range, then each channel encoded.
+              // Encoding.encode(colour): brought into range, then each channel encoded; the
+              // table gives the sample that the bitmap would store of the encoded value.
               Colour.inRangeOf(r, g, b)((r, g, b) =>
-                out.put(x, at, encoding.encode(r), encoding.encode(g), encoding.encode(b))
+                out.put(x, at, levels.encoded(r), levels.encoded(g), levels.encoded(b))
               )
         }
         x += 1

@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Ray, Shape}
+import tracer.geometry.{Plane, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.AreaLight
 
@@ -9,15 +9,32 @@ import tracer.scene.AreaLight
   *
   * Not thread-safe: it keeps scratch space, so each [[Shading]] makes its own.
   *
+  * An area light's shadow rays from one point all lie in its **beam**, the convex hull of the
+  * point and the sub-lights. In a small world ([[World.beams]]) the shapes whose boxes lie
+  * outside the beam (separated from it along an axis, with a margin far above rounding), and the
+  * planes with the whole beam on one side, are left out for all of that point's sub-lights: no
+  * ray in the beam can meet them, so testing the rest one by one in index order gives the same
+  * nearest hit, distance and tie as the world's tree (`ShadowProperties`).
+  *
   * @param world the scene
   * @param query the queries' scratch space, from `world.newQuery()`
+  * @param beams false to test every shadow ray with the world's tree (the reference)
   */
-final class Shadows(world: World, query: Query):
+final class Shadows(world: World, query: Query, beams: Boolean = true):
   // Perf: the area lights' grid of samples, reused for every shading point (a sample is computed
   // once and shared by the cells that have it as a corner; −1 marks one not yet computed). Sized
   // for the scene's largest area light: a Shading is made per row, so a full 64 × 64 grid for a
   // scene without area lights was 32 KB a row (JFR allocation samples, docs/performance.md).
   private val grid = new Array[Double](world.largestAreaLight)
+  // Perf: the beam of the area light being sampled: the shapes its shadow rays may meet, in
+  // index order, their count in `inBeam` (−1 when no beam is aimed: the world's tree), and the
+  // hull's seven axes (x, y, z and its four sides) with its extent along each (JFR of the
+  // gallery's materials and solids: three quarters of the render in the shadow walk; round 7).
+  private val beam   = new Array[Int](if beams && world.beams then world.size else 0)
+  private var inBeam = -1
+  private val axes   = new Array[Double](21)
+  private val low    = new Array[Double](7)
+  private val high   = new Array[Double](7)
 
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
@@ -39,7 +56,11 @@ final class Shadows(world: World, query: Query):
     light.area match
       case Some(area) =>
         java.util.Arrays.fill(grid, 0, area.samplesA * area.samplesB, -1.0)
-        cell(fx, fy, fz, world.subLights(k), area, 0, 0, area.samplesA - 1, area.samplesB - 1)
+        val positions = world.subLights(k)
+        if beam.length > 0 then aim(fx, fy, fz, positions, area)
+        val share = cell(fx, fy, fz, positions, area, 0, 0, area.samplesA - 1, area.samplesB - 1)
+        inBeam = -1
+        share
       case None =>
         val tx    = light.location.x - fx
         val ty    = light.location.y - fy
@@ -104,14 +125,17 @@ final class Shadows(world: World, query: Query):
       dz: Double,
       reach: Double
   ): Double =
-    if !world.transmits then
+    if inBeam >= 0 then
+      if !world.transmits then if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
+      else walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
+    else if !world.transmits then
       if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
-    else transmittance(fx, fy, fz, dx, dy, dz, reach)
+    else transmittanceByWalk(fx, fy, fz, dx, dy, dz, reach)
 
   /** The product of the `transmit` of every surface the ray from `from` in direction d crosses
     * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
     */
-  private def transmittance(
+  private[render] def transmittanceByWalk(
       fx: Double,
       fy: Double,
       fz: Double,
@@ -119,6 +143,20 @@ final class Shadows(world: World, query: Query):
       dy: Double,
       dz: Double,
       reach: Double
+  ): Double = walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = false)
+
+  /** [[transmittanceByWalk]], each step's nearest hit from the world's tree or, `inBeamOnly`,
+    * among the beam's shapes.
+    */
+  private inline def walk(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double,
+      inline inBeamOnly: Boolean
   ): Double =
     // Perf: the walk's state in local doubles, no Vec3 or Ray per step: the origin moves past
     // each surface crossed.
@@ -129,7 +167,9 @@ final class Shadows(world: World, query: Query):
     var share = 1.0
     while share > 0 && left > 0 do
       // Only hits before what is left of the way count (t ≤ left, then t < left below).
-      val i = world.nearestAlong(ox, oy, oz, dx, dy, dz, left, query)
+      val i =
+        if inBeamOnly then nearestInBeam(ox, oy, oz, dx, dy, dz, left)
+        else world.nearestAlong(ox, oy, oz, dx, dy, dz, left, query)
       val t = query.distance
       if i >= 0 && t < left then
         share *= world.surface(i, leafAt(i, ox, oy, oz, dx, dy, dz, t)).transmit
@@ -141,6 +181,227 @@ final class Shadows(world: World, query: Query):
         left -= step
       else left = 0
     share
+
+  /** As `world.nearestAlong` among the beam's shapes: the lowest index hit at the smallest
+    * t ≤ `limit` (−1 for none), its distance in `query.distance`.
+    */
+  private def nearestInBeam(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double
+  ): Int =
+    // Perf: a plain loop over the few shapes, in index order so the first wins a tie.
+    var best  = -1
+    var bestT = limit
+    var j     = 0
+    while j < inBeam do
+      val i = beam(j)
+      if enters(i, ox, oy, oz, dx, dy, dz, bestT) then
+        val t = Primitives.distance(world.each, i, bestT, ox, oy, oz, dx, dy, dz, query)
+        if t < bestT || (t == bestT && t < Double.PositiveInfinity && best < 0) then
+          bestT = t
+          best = i
+      j += 1
+    query.distance = if best < 0 then Double.PositiveInfinity else bestT
+    best
+
+  /** As `world.occludedAlong` among the beam's shapes: some shape hit at 0 < t < `limit`. */
+  private def blockedInBeam(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double
+  ): Boolean =
+    // Perf: as nearestInBeam, stopping at the first blocker.
+    var j = 0
+    while j < inBeam && !(enters(beam(j), ox, oy, oz, dx, dy, dz, limit) &&
+        Primitives.blocks(world.each, beam(j), limit, ox, oy, oz, dx, dy, dz, query))
+    do j += 1
+    j < inBeam
+
+  /** False when the ray cannot meet shape `i` at t ≤ `limit`: for a shape of the general route
+    * or a mesh, its widened box missed (the slab test; NaN from an origin on a slab's plane
+    * counts as inside); the fast shapes' own tests are as quick, so they are always tried.
+    */
+  private inline def enters(
+      i: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double
+  ): Boolean =
+    val kind = world.each.kind(i)
+    if kind == Primitives.SphereKind || kind == Primitives.TriangleKind || kind == Primitives.PlaneKind
+    then true
+    else
+      val b  = world.boxes
+      val at = 6 * i
+      if b(at).isNaN then true
+      else
+        val ix = 1 / dx
+        val iy = 1 / dy
+        val iz = 1 / dz
+        val ax = (b(at) - ox) * ix
+        val bx = (b(at + 3) - ox) * ix
+        val ay = (b(at + 1) - oy) * iy
+        val by = (b(at + 4) - oy) * iy
+        val az = (b(at + 2) - oz) * iz
+        val bz = (b(at + 5) - oz) * iz
+        // Why: the ray's interval inside the box, narrowed axis by axis (NaN leaves it alone).
+        var near = 0.0
+        var far  = limit
+        val nx   = Math.min(ax, bx)
+        val fx   = Math.max(ax, bx)
+        if nx > near then near = nx
+        if fx < far then far = fx
+        val ny = Math.min(ay, by)
+        val fy = Math.max(ay, by)
+        if ny > near then near = ny
+        if fy < far then far = fy
+        val nz = Math.min(az, bz)
+        val fz = Math.max(az, bz)
+        if nz > near then near = nz
+        if fz < far then far = fz
+        near <= far
+
+  /** Aims the beam from (fx, fy, fz) at the sub-lights `positions` of `light`: keeps in
+    * [[beam]] the shapes that a segment from the point to a sub-light may meet.
+    */
+  private def aim(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      positions: IArray[Double],
+      light: AreaLight
+  ): Unit =
+    val nb = light.samplesB
+    val c1 = (light.samplesA - 1) * nb
+    axis(0, 1, 0, 0)
+    axis(1, 0, 1, 0)
+    axis(2, 0, 0, 1)
+    // The sides through the point and two neighbouring corners of the grid (a zero axis when
+    // the grid is a line or a point separates nothing).
+    side(3, fx, fy, fz, positions, 0, c1)
+    side(4, fx, fy, fz, positions, c1, c1 + nb - 1)
+    side(5, fx, fy, fz, positions, c1 + nb - 1, nb - 1)
+    side(6, fx, fy, fz, positions, nb - 1, 0)
+    // Perf: the hull's extents and the shapes' tests in plain loops, once a shading point.
+    var scale = Math.max(Math.abs(fx), Math.max(Math.abs(fy), Math.abs(fz)))
+    var p     = 0
+    while p < positions.length do
+      scale = Math.max(scale, Math.abs(positions(p)))
+      p += 1
+    var a = 0
+    while a < 7 do
+      val ax = axes(3 * a)
+      val ay = axes(3 * a + 1)
+      val az = axes(3 * a + 2)
+      var lo = ax * fx + ay * fy + az * fz
+      var hi = lo
+      var q  = 0
+      while q < positions.length do
+        val v = ax * positions(q) + ay * positions(q + 1) + az * positions(q + 2)
+        if v < lo then lo = v
+        if v > hi then hi = v
+        q += 3
+      low(a) = lo
+      high(a) = hi
+      a += 1
+    var count = 0
+    var i     = 0
+    while i < world.size do
+      if mayMeet(i, fx, fy, fz, positions, scale) then
+        beam(count) = i
+        count += 1
+      i += 1
+    inBeam = count
+
+  /** Axis `a` of the beam: (x, y, z). */
+  private inline def axis(a: Int, x: Double, y: Double, z: Double): Unit =
+    axes(3 * a) = x; axes(3 * a + 1) = y; axes(3 * a + 2) = z
+
+  /** Axis `a`: the normal (p − f) × (q − f) of the side through f and sub-lights p and q. */
+  private def side(
+      a: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      positions: IArray[Double],
+      p: Int,
+      q: Int
+  ): Unit =
+    val ux = positions(3 * p) - fx
+    val uy = positions(3 * p + 1) - fy
+    val uz = positions(3 * p + 2) - fz
+    val vx = positions(3 * q) - fx
+    val vy = positions(3 * q + 1) - fy
+    val vz = positions(3 * q + 2) - fz
+    axis(a, uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx)
+
+  /** False when shape `i` lies wholly outside the beam: its box separated from the hull along
+    * one of the axes by more than a margin (10⁻⁷ of the coordinates' size, far above their
+    * rounding), or, a plane, with the point and every sub-light on one side of it by as much.
+    */
+  private def mayMeet(
+      i: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      positions: IArray[Double],
+      scale: Double
+  ): Boolean =
+    val b   = world.boxes
+    val at  = 6 * i
+    val lox = b(at)
+    if lox.isNaN then
+      world.shape(i) match
+        case plane: Plane =>
+          val n = plane.normal
+          val m = Shadows.Margin * (1 + scale + Math.abs(plane.distance))
+          val s = n.x * fx + n.y * fy + n.z * fz - plane.distance
+          // Perf: every sub-light's side, in a plain loop.
+          var above = s > m
+          var below = s < -m
+          var q     = 0
+          while q < positions.length && (above || below) do
+            val v = n.x * positions(q) + n.y * positions(q + 1) + n.z * positions(q + 2) -
+              plane.distance
+            above = above && v > m
+            below = below && v < -m
+            q += 3
+          !(above || below)
+        case _ => true
+    else
+      val cx   = (lox + b(at + 3)) * 0.5
+      val cy   = (b(at + 1) + b(at + 4)) * 0.5
+      val cz   = (b(at + 2) + b(at + 5)) * 0.5
+      val hx   = (b(at + 3) - lox) * 0.5
+      val hy   = (b(at + 4) - b(at + 1)) * 0.5
+      val hz   = (b(at + 5) - b(at + 2)) * 0.5
+      val size = 1 + scale + Math.abs(cx) + Math.abs(cy) + Math.abs(cz) + hx + hy + hz
+      // Perf: the seven axes in a plain loop, stopping at the first that separates.
+      var meets = true
+      var a     = 0
+      while meets && a < 7 do
+        val ax = axes(3 * a)
+        val ay = axes(3 * a + 1)
+        val az = axes(3 * a + 2)
+        val c  = ax * cx + ay * cy + az * cz
+        val r  = Math.abs(ax) * hx + Math.abs(ay) * hy + Math.abs(az) * hz
+        val m  = Shadows.Margin * (Math.abs(ax) + Math.abs(ay) + Math.abs(az)) * size
+        meets = !(c + r < low(a) - m || c - r > high(a) + m)
+        a += 1
+      meets
 
   /** Which leaf of shape `i` the ray from (ox, oy, oz) along d meets at `t`: 0 unless the shape
     * shows a surface per leaf (a CSG combination), which takes the general path's full hit.
@@ -157,3 +418,8 @@ final class Shadows(world: World, query: Query):
   ): Int =
     if !world.hasLeafSurfaces(i) then 0
     else Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
+
+/** The margin of [[Shadows]]' beams. */
+object Shadows:
+  /** A beam's margin, as a share of the size of the coordinates compared. */
+  val Margin: Double = 1e-7

@@ -51,6 +51,33 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
   val transmits: Boolean = objects.exists(_.surfaces.exists(_.transmit > 0))
 
+  /** True when the shadow rays of an area light test the few shapes its beam may meet
+    * ([[Shadows]]): a world of at most [[World.BeamShapes]] shapes with an area light.
+    */
+  val beams: Boolean = largestAreaLight > 0 && shapes.length <= World.BeamShapes
+
+  /** Every shape as a primitive of its own, in index order, for the beams (empty without). */
+  private[render] val each: Primitives =
+    if beams then Primitives(shapes.toIndexedSeq, shapes.indices.toArray)
+    else Primitives(IndexedSeq.empty, Array.emptyIntArray)
+
+  // Perf: each shape's box for the beams, lo then hi at 6i, widened by 10⁻⁷ of its coordinates'
+  // size (as the tree rounds its boxes outwards to floats); a shape without bounds has NaN (a
+  // plane is then tested by its side, anything else always kept).
+  private[render] val boxes: Array[Double] =
+    if !beams then Array.emptyDoubleArray
+    else
+      shapes.flatMap(s =>
+        Shape.bounds(s).fold(Array.fill(6)(Double.NaN)) { b =>
+          val size = 1 + Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z).map(Math.abs).max
+          val m    = 1e-7 * size
+          Array(b.lo.x - m, b.lo.y - m, b.lo.z - m, b.hi.x + m, b.hi.y + m, b.hi.z + m)
+        }
+      )
+
+  /** The number of shapes. */
+  def size: Int = shapes.length
+
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)
 
@@ -161,6 +188,11 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
 
 /** Precomputation for [[World]]. */
 object World:
+  /** The most shapes a world may have for its area lights' shadow rays to be tested shape by
+    * shape in the beam ([[World.beams]]): beyond it the tree's walk is the better cull.
+    */
+  val BeamShapes: Int = 64
+
   /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
   private def positions(centre: Vec3, light: tracer.scene.AreaLight): IArray[Double] =
     val out = new Array[Double](3 * light.samplesA * light.samplesB)
