@@ -26,6 +26,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   private val wb       = wide.boxes
   private val wc       = wide.child
   private val wn       = wide.count
+  private val bound    = WideWalk.bound(wb)
   private val vertices = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
@@ -55,23 +56,26 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     val entries = query.meshEntries
     var best    = Int.MaxValue
     var bestT   = limit
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) { (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
       var sp =
         if wide.size == 0 then 0
         else
-          WideWalk.push(
+          WideWalk.pushFloat(
             wb,
             wn,
             0,
             0,
             stack,
             entries,
-            ox,
-            oy,
-            oz,
             ix,
             iy,
             iz,
+            nx,
+            ny,
+            nz,
+            fx,
+            fy,
+            fz,
             sx,
             sy,
             sz,
@@ -95,19 +99,22 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
                   best = f
               k += 1
           else
-            sp = WideWalk.push(
+            sp = WideWalk.pushFloat(
               wb,
               wn,
               wc(slot),
               sp,
               stack,
               entries,
-              ox,
-              oy,
-              oz,
               ix,
               iy,
               iz,
+              nx,
+              ny,
+              nz,
+              fx,
+              fy,
+              fz,
               sx,
               sy,
               sz,
@@ -134,24 +141,27 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
     val stack   = query.meshNodes
     val entries = query.meshEntries
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) { (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
       var hit = false
       var sp  =
         if wide.size == 0 then 0
         else
-          WideWalk.push(
+          WideWalk.pushFloat(
             wb,
             wn,
             0,
             0,
             stack,
             entries,
-            ox,
-            oy,
-            oz,
             ix,
             iy,
             iz,
+            nx,
+            ny,
+            nz,
+            fx,
+            fy,
+            fz,
             sx,
             sy,
             sz,
@@ -169,19 +179,22 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
             hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
             k += 1
         else
-          sp = WideWalk.push(
+          sp = WideWalk.pushFloat(
             wb,
             wn,
             wc(slot),
             sp,
             stack,
             entries,
-            ox,
-            oy,
-            oz,
             ix,
             iy,
             iz,
+            nx,
+            ny,
+            nz,
+            fx,
+            fy,
+            fz,
             sx,
             sy,
             sz,
