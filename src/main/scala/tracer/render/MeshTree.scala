@@ -56,47 +56,129 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     val entries = query.meshEntries
     var best    = Int.MaxValue
     var bestT   = limit
-    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) { (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
-      var sp =
-        if wide.size == 0 then 0
-        else
-          WideWalk.pushFloat(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ix,
-            iy,
-            iz,
-            nx,
-            ny,
-            nz,
-            fx,
-            fy,
-            fz,
-            sx,
-            sy,
-            sz,
-            bestT,
-            true
-          )
-      while sp > 0 do
-        sp -= 1
-        val slot = stack(sp)
-        if entries(sp) <= bestT then
+    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) {
+      (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
+        var sp =
+          if wide.size == 0 then 0
+          else
+            WideWalk.pushFloat(
+              wb,
+              wn,
+              0,
+              0,
+              stack,
+              entries,
+              ix,
+              iy,
+              iz,
+              nx,
+              ny,
+              nz,
+              fx,
+              fy,
+              fz,
+              sx,
+              sy,
+              sz,
+              bestT,
+              true
+            )
+        while sp > 0 do
+          sp -= 1
+          val slot = stack(sp)
+          if entries(sp) <= bestT then
+            val count = wn(slot)
+            if count > 0 then
+              var k   = wc(slot)
+              val end = k + count
+              while k < end do
+                val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
+                if t <= bestT && t < Double.PositiveInfinity then
+                  val f = faces(k)
+                  if t < bestT || f < best then
+                    bestT = t
+                    best = f
+                k += 1
+            else
+              sp = WideWalk.pushFloat(
+                wb,
+                wn,
+                wc(slot),
+                sp,
+                stack,
+                entries,
+                ix,
+                iy,
+                iz,
+                nx,
+                ny,
+                nz,
+                fx,
+                fy,
+                fz,
+                sx,
+                sy,
+                sz,
+                bestT,
+                true
+              )
+    }
+    query.meshFace = best
+    if best == Int.MaxValue then Double.PositiveInfinity else bestT
+
+  /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
+    * first.
+    */
+  def occluded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
+    val stack   = query.meshNodes
+    val entries = query.meshEntries
+    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) {
+      (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
+        var hit = false
+        var sp  =
+          if wide.size == 0 then 0
+          else
+            WideWalk.pushFloat(
+              wb,
+              wn,
+              0,
+              0,
+              stack,
+              entries,
+              ix,
+              iy,
+              iz,
+              nx,
+              ny,
+              nz,
+              fx,
+              fy,
+              fz,
+              sx,
+              sy,
+              sz,
+              limit,
+              false
+            )
+        while sp > 0 && !hit do
+          sp -= 1
+          val slot  = stack(sp)
           val count = wn(slot)
           if count > 0 then
             var k   = wc(slot)
             val end = k + count
-            while k < end do
-              val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
-              if t <= bestT && t < Double.PositiveInfinity then
-                val f = faces(k)
-                if t < bestT || f < best then
-                  bestT = t
-                  best = f
+            while k < end && !hit do
+              hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
               k += 1
           else
             sp = WideWalk.pushFloat(
@@ -118,90 +200,10 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
               sx,
               sy,
               sz,
-              bestT,
-              true
+              limit,
+              false
             )
-    }
-    query.meshFace = best
-    if best == Int.MaxValue then Double.PositiveInfinity else bestT
-
-  /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
-    * first.
-    */
-  def occluded(
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      query: Query
-  ): Boolean =
-    // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
-    val stack   = query.meshNodes
-    val entries = query.meshEntries
-    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) { (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
-      var hit = false
-      var sp  =
-        if wide.size == 0 then 0
-        else
-          WideWalk.pushFloat(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ix,
-            iy,
-            iz,
-            nx,
-            ny,
-            nz,
-            fx,
-            fy,
-            fz,
-            sx,
-            sy,
-            sz,
-            limit,
-            false
-          )
-      while sp > 0 && !hit do
-        sp -= 1
-        val slot  = stack(sp)
-        val count = wn(slot)
-        if count > 0 then
-          var k   = wc(slot)
-          val end = k + count
-          while k < end && !hit do
-            hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
-            k += 1
-        else
-          sp = WideWalk.pushFloat(
-            wb,
-            wn,
-            wc(slot),
-            sp,
-            stack,
-            entries,
-            ix,
-            iy,
-            iz,
-            nx,
-            ny,
-            nz,
-            fx,
-            fy,
-            fz,
-            sx,
-            sy,
-            sz,
-            limit,
-            false
-          )
-      hit
+        hit
     }
 
   /** The distance to leaf-order face k ([[tracer.geometry.Mesh.faceDistance]]). */

@@ -1,12 +1,13 @@
 package tracer.render
 
 /** The steps of a walk down a [[WideTree]], shared by the scene's [[Bvh]] and each mesh's
-  * [[MeshTree]]: all `inline`, so each walk is compiled as if written out in place.
+  * [[MeshTree]]: all `inline`, so each walk is compiled as if written out in place. Its box test
+  * is in float ([[walkFloat]], [[entryFloat]]) and may only err towards entering a box.
   */
 private[render] object WideWalk:
 
   /** Runs `body` on the ray's inverse direction and, per axis, the offset (0 or 3) of a box's
-    * near corner within its six coordinates.
+    * near corner within its six coordinates (the binary walks' double slab test, `Bvh.entry`).
     *
     * Perf: `inline` with an inline function: the lambda's body is spliced in, so there is no tuple
     * or object to allocate (a tuple of doubles is boxed) and no call.
@@ -26,85 +27,8 @@ private[render] object WideWalk:
       if iz >= 0 then 0 else 3
     )
 
-  /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
-    * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
-    * farthest first, so the nearest is popped next. Returns the new stack size.
-    */
-  inline def push(
-      wb: Array[Float],
-      wn: Array[Int],
-      node: Int,
-      sp: Int,
-      stack: Array[Int],
-      entries: Array[Double],
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      ix: Double,
-      iy: Double,
-      iz: Double,
-      sx: Int,
-      sy: Int,
-      sz: Int,
-      limit: Double,
-      inline ordered: Boolean
-  ): Int =
-    // Why: the stack top moves as slots are pushed; an insertion sort keeps them farthest first.
-    var top = sp
-    var c   = 0
-    while c < WideTree.Width do
-      val slot = WideTree.Width * node + c
-      if wn(slot) >= 0 then
-        val t = entry(wb, 24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
-        if t < Double.PositiveInfinity then
-          var j = top
-          if ordered then
-            while j > sp && entries(j - 1) < t do
-              stack(j) = stack(j - 1); entries(j) = entries(j - 1)
-              j -= 1
-          stack(j) = slot; entries(j) = t
-          top += 1
-      c += 1
-    top
-
-  /** The distance at which the ray enters the float box at `b` of `wb` (a child's low x; its
-    * other coordinates 4 floats apart), or +∞ when it misses it before `limit`: the slab test on
-    * the float box widened to double (exactly), near planes chosen by `sx` etc. (0 for the low
-    * side, 3 for the high: 4 × that floats on).
-    */
-  inline def entry(
-      wb: Array[Float],
-      b: Int,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      ix: Double,
-      iy: Double,
-      iz: Double,
-      sx: Int,
-      sy: Int,
-      sz: Int,
-      limit: Double
-  ): Double =
-    // Perf: on four floats apart: no box object, local doubles narrowed in place.
-    var tmin = 0.0
-    var tmax = limit
-    val nx   = (wb(b + 4 * sx).toDouble - ox) * ix
-    val fx   = (wb(b + 12 - 4 * sx).toDouble - ox) * ix
-    if nx > tmin then tmin = nx
-    if fx < tmax then tmax = fx
-    val ny = (wb(b + 4 + 4 * sy).toDouble - oy) * iy
-    val fy = (wb(b + 16 - 4 * sy).toDouble - oy) * iy
-    if ny > tmin then tmin = ny
-    if fy < tmax then tmax = fy
-    val nz = (wb(b + 8 + 4 * sz).toDouble - oz) * iz
-    val fz = (wb(b + 20 - 4 * sz).toDouble - oz) * iz
-    if nz > tmin then tmin = nz
-    if fz < tmax then tmax = fz
-    if tmin <= tmax then tmin else Double.PositiveInfinity
-
-  /** The inverse of the largest direction component's reciprocal the float slab test takes on an
-    * axis: past it (a ray all but parallel to that axis's planes) the axis is left out of the
+  /** The largest magnitude of a direction component's reciprocal the float slab test takes on
+    * an axis: past it (a ray all but parallel to that axis's planes) the axis is left out of the
     * test, which then only ever enters more boxes.
     */
   inline val MaxInverse = 1099511627776.0 // 2^40
@@ -151,14 +75,27 @@ private[render] object WideWalk:
       dz: Double,
       bound: Double
   )(
-      inline body: (Float, Float, Float, Float, Float, Float, Float, Float, Float, Int, Int, Int) => A
+      inline body: (
+          Float,
+          Float,
+          Float,
+          Float,
+          Float,
+          Float,
+          Float,
+          Float,
+          Float,
+          Int,
+          Int,
+          Int
+      ) => A
   ): A =
-    val ix = 1 / dx
-    val iy = 1 / dy
-    val iz = 1 / dz
-    val ex = (bound + Math.abs(ox)) * Math.abs(ix) * Slack
-    val ey = (bound + Math.abs(oy)) * Math.abs(iy) * Slack
-    val ez = (bound + Math.abs(oz)) * Math.abs(iz) * Slack
+    val ix  = 1 / dx
+    val iy  = 1 / dy
+    val iz  = 1 / dz
+    val ex  = (bound + Math.abs(ox)) * Math.abs(ix) * Slack
+    val ey  = (bound + Math.abs(oy)) * Math.abs(iy) * Slack
+    val ez  = (bound + Math.abs(oz)) * Math.abs(iz) * Slack
     val okx = Math.abs(ix) <= MaxInverse && ex < 1e30
     val oky = Math.abs(iy) <= MaxInverse && ey < 1e30
     val okz = Math.abs(iz) <= MaxInverse && ez < 1e30
@@ -182,9 +119,11 @@ private[render] object WideWalk:
     val f = x.toFloat
     if f.toDouble < x then Math.nextUp(f) else f
 
-  /** [[push]] with the float slab test ([[entryFloat]]) on the ray's constants from
-    * [[walkFloat]]: the four children's tests written out one after the other (straight-line code
-    * the compiler can interleave), then the ones hit pushed.
+  /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
+    * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
+    * farthest first, so the nearest is popped next. Returns the new stack size. The ray is
+    * [[walkFloat]]'s constants, each box tested by [[entryFloat]]: the four tests written out one
+    * after the other (straight-line code the compiler can interleave), then the ones hit pushed.
     */
   inline def pushFloat(
       wb: Array[Float],
@@ -215,11 +154,10 @@ private[render] object WideWalk:
     val t2   = entryFloat(wb, b + 2, ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz, lim)
     val t3   = entryFloat(wb, b + 3, ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz, lim)
     val slot = WideTree.Width * node
-    var top  = sp
-    top = place(t0, slot, wn, sp, top, stack, entries, ordered)
-    top = place(t1, slot + 1, wn, sp, top, stack, entries, ordered)
-    top = place(t2, slot + 2, wn, sp, top, stack, entries, ordered)
-    place(t3, slot + 3, wn, sp, top, stack, entries, ordered)
+    val top0 = place(t0, slot, wn, sp, sp, stack, entries, ordered)
+    val top1 = place(t1, slot + 1, wn, sp, top0, stack, entries, ordered)
+    val top2 = place(t2, slot + 2, wn, sp, top1, stack, entries, ordered)
+    place(t3, slot + 3, wn, sp, top2, stack, entries, ordered)
 
   /** Pushes `slot`, entered at `t` (+∞: missed, not pushed), onto the stack of `top` slots whose
     * part above `sp` is this node's; `ordered`: kept farthest first. Returns the new size.

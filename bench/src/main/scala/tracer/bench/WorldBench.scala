@@ -51,23 +51,6 @@ class WorldBench:
     val d = r.direction
     bvh.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, Int.MaxValue, query)
 
-  /** The hierarchy alone, its 4-wide tree with the double slab test the float one replaced. */
-  @Benchmark def bvhWideDouble: Int =
-    val r = next()
-    val o = r.origin
-    val d = r.direction
-    bvh.nearestDouble(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, Int.MaxValue, query)
-
-  /** A shadow ray through the 4-wide tree, nearest child first. */
-  @Benchmark def occludedWideOrdered: Boolean =
-    val r = next()
-    bvh.occludedOrdered(0, 0.05, 2, -0.4 + r.direction.x, 0.6, -0.6, 12.0, query)
-
-  /** A shadow ray through the 4-wide tree with the double slab test. */
-  @Benchmark def occludedWideDouble: Boolean =
-    val r = next()
-    bvh.occludedDouble(0, 0.05, 2, -0.4 + r.direction.x, 0.6, -0.6, 12.0, query)
-
   /** The hierarchy alone, the binary tree it was collapsed from: what the wide tree gains. */
   @Benchmark def bvhBinary: Int =
     val r = next()
