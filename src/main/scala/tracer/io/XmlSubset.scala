@@ -283,11 +283,16 @@ private[io] object XmlSubset:
 
     /** A reference from its `&`: one of the five predefined entities or a character reference. */
     private def reference(text: java.lang.StringBuilder): Unit =
-      if startsWith("&lt;") then { text.append('<'); i += 4 }
-      else if startsWith("&gt;") then { text.append('>'); i += 4 }
-      else if startsWith("&amp;") then { text.append('&'); i += 5 }
-      else if startsWith("&apos;") then { text.append('\''); i += 6 }
-      else if startsWith("&quot;") then { text.append('"'); i += 6 }
+      if startsWith("&lt;") then
+        text.append('<'); i += 4
+      else if startsWith("&gt;") then
+        text.append('>'); i += 4
+      else if startsWith("&amp;") then
+        text.append('&'); i += 5
+      else if startsWith("&apos;") then
+        text.append('\''); i += 6
+      else if startsWith("&quot;") then
+        text.append('"'); i += 6
       else if startsWith("&#x") then
         i += 3
         text.appendCodePoint(codePoint(16)): Unit

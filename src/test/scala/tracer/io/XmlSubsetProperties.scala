@@ -22,7 +22,7 @@ class XmlSubsetProperties extends ScalaCheckSuite:
 
   /** Records every call; answers the `failAt`-th call (from 0) with an error. */
   private final class Recorder(failAt: Int = -1) extends XmlVisitor:
-    val events = Vector.newBuilder[Event]
+    val events        = Vector.newBuilder[Event]
     private var calls = 0 // Why: counts the calls to fail at one of them
     private def note(e: Event): Either[SceneError, Unit] =
       events += e
@@ -86,7 +86,9 @@ class XmlSubsetProperties extends ScalaCheckSuite:
     for s <- nameStart; n <- Gen.choose(0, 6); r <- Gen.listOfN(n, nameChar) yield (s :: r).mkString
 
   private val space =
-    Gen.choose(1, 4).flatMap(n => Gen.listOfN(n, Gen.oneOf(" ", "\n", "\t", "\r\n", "\r")))
+    Gen
+      .choose(1, 4)
+      .flatMap(n => Gen.listOfN(n, Gen.oneOf(" ", "\n", "\t", "\r\n", "\r")))
       .map(_.mkString)
   private val maybeSpace = Gen.frequency(3 -> Gen.const(""), 1 -> space)
 
@@ -131,7 +133,9 @@ class XmlSubsetProperties extends ScalaCheckSuite:
       n     <- name
       attrs <- attributes
       s     <- maybeSpace
-      kids  <- if depth <= 0 then Gen.const(Nil) else Gen.choose(0, 3).flatMap(k => Gen.listOfN(k, element(depth - 1)))
+      kids  <-
+        if depth <= 0 then Gen.const(Nil)
+        else Gen.choose(0, 3).flatMap(k => Gen.listOfN(k, element(depth - 1)))
       gaps  <- Gen.listOfN(kids.size + 1, misc)
       empty <- Gen.oneOf(true, false)
       close <- maybeSpace
@@ -165,7 +169,24 @@ class XmlSubsetProperties extends ScalaCheckSuite:
         doc <- document
         at  <- Gen.choose(0, doc.length)
         cut <- Gen.choose(0, 3)
-        put <- Gen.oneOf("", "<", ">", "&", "&x;", "/", "\"", "'", "--", "x", "<!", "<?", "]]>", "\u0001", "=", " ")
+        put <- Gen.oneOf(
+          "",
+          "<",
+          ">",
+          "&",
+          "&x;",
+          "/",
+          "\"",
+          "'",
+          "--",
+          "x",
+          "<!",
+          "<?",
+          "]]>",
+          "\u0001",
+          "=",
+          " "
+        )
       yield doc.take(at) + put + doc.drop(math.min(doc.length, at + cut))
     forAllNoShrink(damaged) { doc =>
       val bytes = doc.getBytes(UTF_8)
@@ -183,7 +204,10 @@ class XmlSubsetProperties extends ScalaCheckSuite:
     assertEquals(fast(bytes), None, clue)
 
   test("a DOCTYPE goes to SAX (which refuses it before expanding anything)"):
-    outside("doctype", s"""<?xml version="1.0"?>\n<!DOCTYPE scene [<!ENTITY a "b">]>\n<scene>$camera</scene>""")
+    outside(
+      "doctype",
+      s"""<?xml version="1.0"?>\n<!DOCTYPE scene [<!ENTITY a "b">]>\n<scene>$camera</scene>"""
+    )
     outside("doctype", s"""<!DOCTYPE scene>\n<scene>$camera</scene>""")
 
   test("a CDATA section goes to SAX"):
@@ -212,18 +236,18 @@ class XmlSubsetProperties extends ScalaCheckSuite:
 
   test("malformed markup of any kind goes to SAX"):
     for (clue, doc) <- List(
-        "mismatched end tag" -> s"<scene>$camera</scen>",
-        "unclosed"           -> s"<scene>$camera",
-        "empty"              -> "",
-        "two roots"          -> s"<scene/><scene/>",
-        "duplicate attribute" -> s"""<scene a="1" a="2">$camera</scene>""",
+        "mismatched end tag"          -> s"<scene>$camera</scen>",
+        "unclosed"                    -> s"<scene>$camera",
+        "empty"                       -> "",
+        "two roots"                   -> s"<scene/><scene/>",
+        "duplicate attribute"         -> s"""<scene a="1" a="2">$camera</scene>""",
         "no space between attributes" -> s"""<scene a="1"b="2">$camera</scene>""",
-        "< in a value"       -> s"""<scene a="<">$camera</scene>""",
-        "unquoted value"     -> s"""<scene a=1>$camera</scene>""",
-        "-- in a comment"    -> s"<scene><!-- a -- b -->$camera</scene>",
-        "unclosed comment"   -> s"<scene><!-- a $camera</scene>",
-        "control character"  -> s"<scene>\u0001$camera</scene>",
-        "non-ASCII name"     -> s"<scène>$camera</scène>"
+        "< in a value"                -> s"""<scene a="<">$camera</scene>""",
+        "unquoted value"              -> s"""<scene a=1>$camera</scene>""",
+        "-- in a comment"             -> s"<scene><!-- a -- b -->$camera</scene>",
+        "unclosed comment"            -> s"<scene><!-- a $camera</scene>",
+        "control character"           -> s"<scene>\u0001$camera</scene>",
+        "non-ASCII name"              -> s"<scène>$camera</scène>"
       )
     do outside(clue, doc)
 
@@ -231,10 +255,25 @@ class XmlSubsetProperties extends ScalaCheckSuite:
     val doc = s"""<?xml version="1.0" encoding="ISO-8859-1"?><scene a="é">$camera</scene>"""
     outsideBytes("latin-1", doc.getBytes(ISO_8859_1))
     outsideBytes("utf-16", s"<scene>$camera</scene>".getBytes(UTF_16))
-    outsideBytes("bom", Array[Byte](0xef.toByte, 0xbb.toByte, 0xbf.toByte) ++ s"<scene>$camera</scene>".getBytes(UTF_8))
-    outsideBytes("invalid utf-8", s"<scene a='".getBytes(UTF_8) ++ Array(0xff.toByte) ++ s"'>$camera</scene>".getBytes(UTF_8))
+    outsideBytes(
+      "bom",
+      Array[Byte](0xef.toByte, 0xbb.toByte, 0xbf.toByte) ++ s"<scene>$camera</scene>".getBytes(
+        UTF_8
+      )
+    )
+    outsideBytes(
+      "invalid utf-8",
+      s"<scene a='".getBytes(UTF_8) ++ Array(0xff.toByte) ++ s"'>$camera</scene>".getBytes(UTF_8)
+    )
 
   test("SceneXml gives SAX's message for a document outside the subset"):
     val doc      = s"""<?xml version="1.0"?>\n<!DOCTYPE scene>\n<scene>$camera</scene>"""
-    val expected = Left(SceneError(Some(2), "", "a <!DOCTYPE> is not allowed in a scene (no entities are expanded)"))
-    assertEquals(SceneXml.parse(doc.getBytes(UTF_8), SceneSources(_ => Left("no"), _ => Left("no"))).map(_ => ()), expected)
+    val expected = Left(
+      SceneError(Some(2), "", "a <!DOCTYPE> is not allowed in a scene (no entities are expanded)")
+    )
+    assertEquals(
+      SceneXml
+        .parse(doc.getBytes(UTF_8), SceneSources(_ => Left("no"), _ => Left("no")))
+        .map(_ => ()),
+      expected
+    )
