@@ -19,8 +19,7 @@ object SceneXml:
     * textures and meshes are read through `sources`, each distinct file once.
     */
   def parse(text: String, sources: SceneSources): Either[SceneError, Scene] =
-    val reader = SceneReader(sources)
-    XmlDocument.read(text, reader).flatMap(_ => reader.scene)
+    read(sources, XmlSubset.read(text, _), XmlDocument.read(text, _))
 
   /** Parses a scene document whose textures come from `loadTexture` (meshes from files relative
     * to the working directory).
@@ -30,8 +29,26 @@ object SceneXml:
 
   /** Parses a scene document from its bytes (the encoding comes from its XML declaration). */
   def parse(bytes: Array[Byte], sources: SceneSources): Either[SceneError, Scene] =
-    val reader = SceneReader(sources)
-    XmlDocument.read(bytes, reader).flatMap(_ => reader.scene)
+    read(sources, XmlSubset.read(bytes, _), XmlDocument.read(bytes, _))
+
+  /** The scene read by `fast` ([[XmlSubset]]) or, when the document is outside its subset, by
+    * `sax` ([[XmlDocument]]) from the start with a fresh reader. The fast reader's warnings are
+    * held until it has finished, so a document read twice warns once.
+    */
+  private def read(
+      sources: SceneSources,
+      fast: XmlVisitor => Option[Either[SceneError, Unit]],
+      sax: XmlVisitor => Either[SceneError, Unit]
+  ): Either[SceneError, Scene] =
+    val held  = mutable.ListBuffer.empty[String]
+    val first = SceneReader(sources.copy(warn = held += _))
+    fast(first) match
+      case Some(result) =>
+        held.foreach(sources.warn)
+        result.flatMap(_ => first.scene)
+      case None =>
+        val reader = SceneReader(sources)
+        sax(reader).flatMap(_ => reader.scene)
 
   /** Reads the scene file `path`, its textures and meshes resolved against `base` (by default
     * the working directory, as the command line does).

@@ -25,13 +25,35 @@ private[io] final class SurfaceReader(
 ):
   import ElementRules.*
 
+  // Perf: the last surface read without error, with its element and place. Generated scenes
+  // give every object the same <surface>, and reading it again cold was a fifth of loading the
+  // 5 MB <triangle> scene (scripts/bench.sh --loading; docs/performance.md, round 7).
+  private var last: Option[(Element, SurfacePlace, Surface)] = None
+
   /** The one `<surface>` among `siblings` (the children of `owner`), if there is one. */
   def optional(
       owner: Element,
       siblings: List[Element],
       place: SurfacePlace
   ): Result[Option[Surface]] =
-    atMostOne(owner, siblings, "surface").flatMap(traverseOption(_)(surface(owner, _, place)))
+    atMostOne(owner, siblings, "surface").flatMap(traverseOption(_)(remembered(owner, _, place)))
+
+  /** [[surface]], or the last surface read when `e` says the same at the same place: a
+    * surface's value depends on its element's names, attributes and children and on its place
+    * only (its owner and lines appear in errors alone, which are never remembered).
+    */
+  private def remembered(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
+    last match
+      case Some((element, at, surface)) if at == place && sameContent(element, e) => Right(surface)
+      case _                                                                      =>
+        val read = surface(owner, e, place)
+        read.foreach(s => last = Some((e, place, s)))
+        read
+
+  /** True when `a` and `b` have the same names, attributes and children, whatever their lines. */
+  private def sameContent(a: Element, b: Element): Boolean =
+    a.name == b.name && a.attributes == b.attributes && a.strayText.map(_.text) ==
+      b.strayText.map(_.text) && a.children.corresponds(b.children)(sameContent)
 
   private def surface(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
     for

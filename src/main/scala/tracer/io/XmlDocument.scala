@@ -52,7 +52,8 @@ private[io] trait XmlVisitor:
 
 /** Reads XML with the JDK's SAX parser, hardened, as a stream: the document element's children
   * are handed over one by one and then forgotten, so a big scene is never held as a whole tree
-  * (docs/performance.md, loading big scenes).
+  * (docs/performance.md, loading big scenes). Scenes are first given to [[XmlSubset]], which
+  * reads the XML scene files use faster and hands everything else here.
   */
 private[io] object XmlDocument:
 
