@@ -444,42 +444,21 @@ private[render] object WideTree:
     * of largest surface area that is not a leaf, until it has four or only leaves.
     */
   def collapse(tree: Tree): WideTree =
-    // Perf: arrays sized for the worst case (as many wide nodes as binary ones), filled once.
-    val n     = Math.max(1, tree.size)
+    val gather = Gather(tree)
+    // Perf: a first walk counts the wide nodes, so the arrays are sized exactly (sized as if
+    // every binary node became a wide one, they held three times the nodes made: 128 MB too
+    // many for the 1.3M-face mesh; docs/performance.md, round 7), then filled once.
+    val n     = if tree.size == 0 then 1 else gather.count(0)
     val boxes = new Array[Float](24 * n)
     val child = new Array[Int](Width * n)
     val count = new Array[Int](Width * n)
     val kids  = new Array[Int](Width)
     // Why: the number of wide nodes made so far.
-    var size           = 0
-    def isLeaf(b: Int) = tree.links(2 * b + 1) > 0
-    def area(b: Int)   =
-      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
-      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
-      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
-      x * y + y * z + z * x
+    var size = 0
     def make(binary: Int): Int =
       val w = size
       size += 1
-      // Why: the children gathered by opening the largest inner child, a loop on local arrays.
-      var m = 0
-      if isLeaf(binary) then
-        kids(0) = binary; m = 1
-      else
-        kids(0) = tree.links(2 * binary); kids(1) = kids(0) + 1; m = 2
-      var open = true
-      while m < Width && open do
-        var best = -1
-        var k    = 0
-        while k < m do
-          if !isLeaf(kids(k)) && (best < 0 || area(kids(k)) > area(kids(best))) then best = k
-          k += 1
-        if best < 0 then open = false
-        else
-          val left = tree.links(2 * kids(best))
-          kids(best) = left
-          kids(m) = left + 1
-          m += 1
+      val m = gather(binary, kids)
       // Why: loops over the slots: boxes rounded outwards, then each inner child made (which
       // reuses `kids`, so they are copied first).
       val mine = java.util.Arrays.copyOf(kids, m)
@@ -504,7 +483,7 @@ private[render] object WideTree:
       c = 0
       while c < m do
         val b = mine(c)
-        if isLeaf(b) then
+        if gather.isLeaf(b) then
           child(Width * w + c) = tree.links(2 * b)
           count(Width * w + c) = tree.links(2 * b + 1)
         else
@@ -516,6 +495,57 @@ private[render] object WideTree:
     else
       val _ = make(0)
       WideTree(size, boxes, child, count)
+
+  /** The choice of a wide node's children in `tree`, shared by the counting and filling walks. */
+  private final class Gather(tree: Tree):
+    /** True when binary node `b` is a leaf. */
+    def isLeaf(b: Int): Boolean = tree.links(2 * b + 1) > 0
+
+    private def area(b: Int) =
+      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
+      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
+      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
+      x * y + y * z + z * x
+
+    /** Writes the binary nodes that become the children of the wide node made for `binary` into
+      * `kids` and returns their number: its two children, then the child of largest surface
+      * area that is not a leaf opened, until four or only leaves.
+      */
+    def apply(binary: Int, kids: Array[Int]): Int =
+      // Why: the children gathered by opening the largest inner child, a loop on local arrays.
+      var m = 0
+      if isLeaf(binary) then
+        kids(0) = binary; m = 1
+      else
+        kids(0) = tree.links(2 * binary); kids(1) = kids(0) + 1; m = 2
+      // Why: as m.
+      var open = true
+      while m < Width && open do
+        // Why: the best inner child so far, a scan of the few gathered.
+        var best = -1
+        var k    = 0
+        while k < m do
+          if !isLeaf(kids(k)) && (best < 0 || area(kids(k)) > area(kids(best))) then best = k
+          k += 1
+        if best < 0 then open = false
+        else
+          val left = tree.links(2 * kids(best))
+          kids(best) = left
+          kids(m) = left + 1
+          m += 1
+      m
+
+    /** The number of wide nodes the wide node made for `binary` and its descendants take. */
+    def count(binary: Int): Int =
+      val kids = new Array[Int](Width)
+      val m    = apply(binary, kids)
+      // Why: a counted loop over the few children.
+      var total = 1
+      var c     = 0
+      while c < m do
+        if !isLeaf(kids(c)) then total += count(kids(c))
+        c += 1
+      total
 
   /** The largest float at or below `x`. */
   private def down(x: Double): Float =
