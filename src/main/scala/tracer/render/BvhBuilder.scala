@@ -30,20 +30,30 @@ private[render] final class Tree(
   * most 2n − 1 nodes), so subtrees can be built at once on different threads ([[build]] with a
   * pool) and the tree is the same, node for node, however they are scheduled.
   *
-  * @param boxLo  each primitive's padded low corner at 3k..3k+2, moved with it by the partitions
-  * @param boxHi  its high corner, likewise
+  * Perf: the primitives' boxes and centres are floats, the boxes rounded outwards: half the
+  * memory and traffic of doubles (the 1.3M-face mesh's build; docs/performance.md, round 7). The
+  * tree's boxes are their minima and maxima, so the wide tree's rounding leaves them as they are,
+  * and every ray that meets a primitive still meets every box above it.
+  *
+  * @param boxLo  each primitive's padded low corner at 3k..3k+2, rounded down to a float, moved
+  *   with it by the partitions
+  * @param boxHi  its high corner, rounded up, likewise
   * @param centre its box's centre, likewise
   * @param prims  the primitives' numbers, reordered into leaf order
   * @param without the shapes left out for having no bounds, in order (see [[Tree.unbounded]])
   */
 private[render] final class BvhBuilder private (
-    boxLo: Array[Double],
-    boxHi: Array[Double],
-    centre: Array[Double],
+    boxLo: Array[Float],
+    boxHi: Array[Float],
+    centre: Array[Float],
     prims: Array[Int],
     without: Array[Int]
 ):
   import BvhBuilder.*
+
+  // Perf: each primitive's bin along the node's split axis, found once by the binning pass and
+  // read again by the partition (no second division per primitive); a subtree's range is its own.
+  private val bins = new Array[Byte](prims.length)
 
   // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
   private val capacity = Math.max(1, 2 * prims.length - 1)
@@ -164,22 +174,27 @@ private[render] final class BvhBuilder private (
       1
     if n <= MaxLeaf / 2 || extent <= 0 || depth >= MaxDepth then leaf()
     else
+      // Perf: as many bins as primitives below Bins: a node's fixed cost (clearing the bins, the
+      // two sweeps) is per bin, and most nodes are small (the 1.3M-face mesh's build spent more
+      // in the sweeps of 16 bins than on its primitives; docs/performance.md, round 7).
+      val nb = Math.min(Bins, n)
       def bin(k: Int): Int =
-        Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
+        Math.min(nb - 1, ((centre(3 * k + axis) - low) / extent * nb).toInt)
       val binCount = s.binCount
       val binLo    = s.binLo
       val binHi    = s.binHi
       // Bin the primitives along the axis.
       val binCLo = s.binCLo
       val binCHi = s.binCHi
-      java.util.Arrays.fill(binCount, 0)
-      java.util.Arrays.fill(binLo, Double.PositiveInfinity)
-      java.util.Arrays.fill(binHi, Double.NegativeInfinity)
-      java.util.Arrays.fill(binCLo, Double.PositiveInfinity)
-      java.util.Arrays.fill(binCHi, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCount, 0, nb, 0)
+      java.util.Arrays.fill(binLo, 0, 3 * nb, Double.PositiveInfinity)
+      java.util.Arrays.fill(binHi, 0, 3 * nb, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCLo, 0, 3 * nb, Double.PositiveInfinity)
+      java.util.Arrays.fill(binCHi, 0, 3 * nb, Double.NegativeInfinity)
       k = start
       while k < end do
         val b = bin(k)
+        bins(k) = b.toByte
         binCount(b) += 1
         var a = 0
         while a < 3 do
@@ -193,7 +208,7 @@ private[render] final class BvhBuilder private (
       s.sweepStart()
       var c    = 0
       var step = 0
-      while step < Bins - 1 do
+      while step < nb - 1 do
         c += binCount(step)
         s.grow(step)
         s.leftCost(step) = c * area(s.box, 0, 3)
@@ -203,7 +218,7 @@ private[render] final class BvhBuilder private (
       c = 0
       var best     = 0
       var bestCost = Double.PositiveInfinity
-      step = Bins - 1
+      step = nb - 1
       while step > 0 do
         c += binCount(step)
         s.grow(step)
@@ -218,7 +233,7 @@ private[render] final class BvhBuilder private (
         var i = start
         var j = end - 1
         while i <= j do
-          if bin(i) <= best then i += 1
+          if bins(i) <= best then i += 1
           else
             swap(i, j)
             j -= 1
@@ -230,7 +245,7 @@ private[render] final class BvhBuilder private (
         // exact, so the same as from its primitives); a median split finds them itself.
         // Both before the left subtree is built: it reuses the scratch bins.
         val leftKnown  = s.side(binned, 0, best, 6 * left, boxes)
-        val rightKnown = s.side(binned, best + 1, Bins - 1, 6 * (left + 1), boxes)
+        val rightKnown = s.side(binned, best + 1, nb - 1, 6 * (left + 1), boxes)
         val l          = split(left, start, mid, depth + 1, free + 2, s, grain, tasks, leftKnown)
         val r          =
           split(
@@ -249,6 +264,7 @@ private[render] final class BvhBuilder private (
   /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
   private def swap(i: Int, j: Int): Unit =
     val p = prims(i); prims(i) = prims(j); prims(j) = p
+    val b = bins(i); bins(i) = bins(j); bins(j) = b
     var a = 0
     while a < 3 do
       exchange(boxLo, 3 * i + a, 3 * j + a)
@@ -256,16 +272,16 @@ private[render] final class BvhBuilder private (
       exchange(centre, 3 * i + a, 3 * j + a)
       a += 1
 
-  private def exchange(xs: Array[Double], i: Int, j: Int): Unit =
+  private def exchange(xs: Array[Float], i: Int, j: Int): Unit =
     val x = xs(i); xs(i) = xs(j); xs(j) = x
 
 /** Construction constants of [[BvhBuilder]], and its two sources of primitives. */
 private[render] object BvhBuilder:
   /** The builder over the shapes of `shapes` that have bounds (the others are left out). */
   def apply(shapes: IndexedSeq[Shape]): BvhBuilder =
-    val boxLo  = new Array[Double](3 * shapes.length)
-    val boxHi  = new Array[Double](3 * shapes.length)
-    val centre = new Array[Double](3 * shapes.length)
+    val boxLo  = new Array[Float](3 * shapes.length)
+    val boxHi  = new Array[Float](3 * shapes.length)
+    val centre = new Array[Float](3 * shapes.length)
     val found  = Array.newBuilder[Int]
     // The shapes without bounds, collected on the same pass: Shape.bounds is asked once a shape.
     val without = Array.newBuilder[Int]
@@ -288,9 +304,9 @@ private[render] object BvhBuilder:
   /** The builder over the faces of `mesh`, each boxed by its three corners. */
   def faces(mesh: Mesh): BvhBuilder =
     val n      = mesh.faceCount
-    val boxLo  = new Array[Double](3 * n)
-    val boxHi  = new Array[Double](3 * n)
-    val centre = new Array[Double](3 * n)
+    val boxLo  = new Array[Float](3 * n)
+    val boxHi  = new Array[Float](3 * n)
+    val centre = new Array[Float](3 * n)
     val v      = mesh.vertices
     val c      = mesh.corners
     // Perf: one pass over the faces on the mesh's arrays, no Bounds or Triangle per face.
@@ -313,20 +329,22 @@ private[render] object BvhBuilder:
       f += 1
     new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
 
-  /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth. */
+  /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth,
+    * and rounded outwards to floats.
+    */
   private def setBox(
-      boxLo: Array[Double],
-      boxHi: Array[Double],
-      centre: Array[Double],
+      boxLo: Array[Float],
+      boxHi: Array[Float],
+      centre: Array[Float],
       k: Int,
       axis: Int,
       low: Double,
       high: Double
   ): Unit =
     val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
-    boxLo(3 * k + axis) = low - pad
-    boxHi(3 * k + axis) = high + pad
-    centre(3 * k + axis) = (low + high) / 2
+    boxLo(3 * k + axis) = WideTree.down(low - pad)
+    boxHi(3 * k + axis) = WideTree.up(high + pad)
+    centre(3 * k + axis) = ((low + high) / 2).toFloat
 
   /** A subtree left for the pool: its node, primitives, depth, first free node number and what
     * its parent's bins told of it.
@@ -548,11 +566,11 @@ private[render] object WideTree:
       total
 
   /** The largest float at or below `x`. */
-  private def down(x: Double): Float =
+  def down(x: Double): Float =
     val f = x.toFloat
     if f.toDouble > x then Math.nextDown(f) else f
 
   /** The smallest float at or above `x`. */
-  private def up(x: Double): Float =
+  def up(x: Double): Float =
     val f = x.toFloat
     if f.toDouble < x then Math.nextUp(f) else f
