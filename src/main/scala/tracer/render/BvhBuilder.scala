@@ -30,22 +30,23 @@ private[render] final class Tree(
   * most 2n − 1 nodes), so subtrees can be built at once on different threads ([[build]] with a
   * pool) and the tree is the same, node for node, however they are scheduled.
   *
-  * Perf: the primitives' boxes and centres are floats, the boxes rounded outwards: half the
-  * memory and traffic of doubles (the 1.3M-face mesh's build; docs/performance.md, round 7). The
-  * tree's boxes are their minima and maxima, so the wide tree's rounding leaves them as they are,
-  * and every ray that meets a primitive still meets every box above it.
+  * Perf: the primitives' boxes are floats rounded outwards: a third less memory and traffic than
+  * doubles (the 1.3M-face mesh's build; docs/performance.md, round 7). The tree's boxes are their
+  * minima and maxima, so the wide tree's rounding leaves them as they are, and every ray that
+  * meets a primitive still meets every box above it. The centres stay doubles: they choose the
+  * splits, and a float has no room for a scene's far-apart shapes (BvhProperties' chain).
   *
   * @param boxLo  each primitive's padded low corner at 3k..3k+2, rounded down to a float, moved
   *   with it by the partitions
   * @param boxHi  its high corner, rounded up, likewise
-  * @param centre its box's centre, likewise
+  * @param centre its box's centre, in double precision, likewise
   * @param prims  the primitives' numbers, reordered into leaf order
   * @param without the shapes left out for having no bounds, in order (see [[Tree.unbounded]])
   */
 private[render] final class BvhBuilder private (
     boxLo: Array[Float],
     boxHi: Array[Float],
-    centre: Array[Float],
+    centre: Array[Double],
     prims: Array[Int],
     without: Array[Int]
 ):
@@ -269,11 +270,14 @@ private[render] final class BvhBuilder private (
     while a < 3 do
       exchange(boxLo, 3 * i + a, 3 * j + a)
       exchange(boxHi, 3 * i + a, 3 * j + a)
-      exchange(centre, 3 * i + a, 3 * j + a)
+      exchangeCentre(3 * i + a, 3 * j + a)
       a += 1
 
   private def exchange(xs: Array[Float], i: Int, j: Int): Unit =
     val x = xs(i); xs(i) = xs(j); xs(j) = x
+
+  private def exchangeCentre(i: Int, j: Int): Unit =
+    val x = centre(i); centre(i) = centre(j); centre(j) = x
 
 /** Construction constants of [[BvhBuilder]], and its two sources of primitives. */
 private[render] object BvhBuilder:
@@ -281,7 +285,7 @@ private[render] object BvhBuilder:
   def apply(shapes: IndexedSeq[Shape]): BvhBuilder =
     val boxLo  = new Array[Float](3 * shapes.length)
     val boxHi  = new Array[Float](3 * shapes.length)
-    val centre = new Array[Float](3 * shapes.length)
+    val centre = new Array[Double](3 * shapes.length)
     val found  = Array.newBuilder[Int]
     // The shapes without bounds, collected on the same pass: Shape.bounds is asked once a shape.
     val without = Array.newBuilder[Int]
@@ -306,7 +310,7 @@ private[render] object BvhBuilder:
     val n      = mesh.faceCount
     val boxLo  = new Array[Float](3 * n)
     val boxHi  = new Array[Float](3 * n)
-    val centre = new Array[Float](3 * n)
+    val centre = new Array[Double](3 * n)
     val v      = mesh.vertices
     val c      = mesh.corners
     // Perf: one pass over the faces on the mesh's arrays, no Bounds or Triangle per face.
@@ -330,12 +334,12 @@ private[render] object BvhBuilder:
     new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
 
   /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth,
-    * and rounded outwards to floats.
+    * its box rounded outwards to floats.
     */
   private def setBox(
       boxLo: Array[Float],
       boxHi: Array[Float],
-      centre: Array[Float],
+      centre: Array[Double],
       k: Int,
       axis: Int,
       low: Double,
@@ -344,7 +348,7 @@ private[render] object BvhBuilder:
     val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
     boxLo(3 * k + axis) = WideTree.down(low - pad)
     boxHi(3 * k + axis) = WideTree.up(high + pad)
-    centre(3 * k + axis) = ((low + high) / 2).toFloat
+    centre(3 * k + axis) = (low + high) / 2
 
   /** A subtree left for the pool: its node, primitives, depth, first free node number and what
     * its parent's bins told of it.
