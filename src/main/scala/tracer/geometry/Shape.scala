@@ -283,7 +283,7 @@ object Mesh:
     val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
     val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
     val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
-    val nx  = cx / len; val ny           = cy / len; val nz           = cz / len
+    val nx  = cx / len; val ny           = cy / len; val nz               = cz / len
     body(nx, ny, nz, x0 * nx + y0 * ny + z0 * nz)
 
   /** The box around the corners `corners` name in `vertices`; every face must be proper. */
@@ -299,12 +299,12 @@ object Mesh:
       ly = Math.min(ly, vertices(at + 1)); hy = Math.max(hy, vertices(at + 1))
       lz = Math.min(lz, vertices(at + 2)); hz = Math.max(hz, vertices(at + 2))
       if k % 3 == 0 then
-        val i1 = 3 * corners(k + 1); val i2 = 3 * corners(k + 2)
+        val i1 = 3 * corners(k + 1); val i2          = 3 * corners(k + 2)
         val ax = vertices(i1) - vertices(at); val ay = vertices(i1 + 1) - vertices(at + 1)
         val az = vertices(i1 + 2) - vertices(at + 2)
         val bx = vertices(i2) - vertices(at); val by = vertices(i2 + 1) - vertices(at + 1)
         val bz = vertices(i2 + 2) - vertices(at + 2)
-        val cx = ay * bz - az * by; val cy = az * bx - ax * bz; val cz = ax * by - ay * bx
+        val cx = ay * bz - az * by; val cy           = az * bx - ax * bz; val cz = ax * by - ay * bx
         val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
         if !(len > 0 && len < Double.PositiveInfinity) then
           // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.

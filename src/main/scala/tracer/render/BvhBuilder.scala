@@ -178,7 +178,7 @@ private[render] final class BvhBuilder private (
       // Perf: as many bins as primitives below Bins: a node's fixed cost (clearing the bins, the
       // two sweeps) is per bin, and most nodes are small (the 1.3M-face mesh's build spent more
       // in the sweeps of 16 bins than on its primitives; docs/performance.md, round 7).
-      val nb = Math.min(Bins, n)
+      val nb               = Math.min(Bins, n)
       def bin(k: Int): Int =
         Math.min(nb - 1, ((centre(3 * k + axis) - low) / extent * nb).toInt)
       val binCount = s.binCount
@@ -476,7 +476,7 @@ private[render] object WideTree:
     val count = new Array[Int](Width * n)
     val kids  = new Array[Int](Width)
     // Why: the number of wide nodes made so far.
-    var size = 0
+    var size                   = 0
     def make(binary: Int): Int =
       val w = size
       size += 1

@@ -21,10 +21,10 @@ import tracer.geometry.Mesh
 final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   // The binary tree is dropped once collapsed: the queries walk the wide one.
   private val (wide, faces) = MeshTree.wideTree(mesh, pool)
-  private val wb       = wide.boxes
-  private val wc       = wide.child
-  private val wn       = wide.count
-  private val vertices = mesh.vertices
+  private val wb            = wide.boxes
+  private val wc            = wide.child
+  private val wn            = wide.count
+  private val vertices      = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
   private val (planes, at) = MeshTree.leafOrder(mesh, faces)
