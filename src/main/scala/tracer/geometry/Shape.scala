@@ -178,17 +178,24 @@ final class Mesh(
     "a mesh's corner texture coordinates must be given for every face or for none"
   )
 
-  /** Each face's plane: Pn (x, y, z) and D at 4f, computed as [[Triangle]] computes them. */
-  val planes: IArray[Double] = Mesh.planesOf(vertices, corners)
-
-  /** The smallest box around the faces' corners. */
+  /** The smallest box around the faces' corners (every face checked proper on the way). */
   val extent: Bounds = Mesh.extentOf(vertices, corners)
+
+  /** Each face's plane: Pn (x, y, z) and D at 4f, computed as [[Triangle]] computes them.
+    *
+    * Perf: made on first use only, by the general path (a mesh inside a placement or a CSG
+    * element): a mesh at the top of a scene is tested by its own tree, which keeps the planes in
+    * its leaf order, and shading derives a face's normal from its corners ([[faceNormal]]), so
+    * a 1.3M-face mesh does not hold a second 41 MB copy (docs/performance.md, round 7).
+    */
+  lazy val planes: IArray[Double] = Mesh.planesOf(vertices, corners)
 
   /** Vertex `i` as a point. */
   def vertex(i: Int): Vec3 = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
 
-  /** The unit normal of face `f` (its plane's Pn). */
-  def faceNormal(f: Int): Vec3 = Vec3(planes(4 * f), planes(4 * f + 1), planes(4 * f + 2))
+  /** The unit normal of face `f` (its plane's Pn, derived from its corners as [[planes]] is). */
+  def faceNormal(f: Int): Vec3 =
+    Mesh.plane(vertices, corners, f)((nx, ny, nz, _) => Vec3(nx, ny, nz))
 
   /** True when face `f` shades with its corners' normals interpolated. */
   def smoothFace(f: Int): Boolean = cornerNormals.nonEmpty && cornerNormals(3 * f) >= 0
@@ -252,28 +259,37 @@ object Mesh:
     val out       = new Array[Double](4 * faceCount)
     // Perf: a counted loop over the faces on plain doubles, once per mesh, in a method of its own
     // (compiled on its own: in the constructor the loop ran interpreted for seconds on a million
-    // faces); the arithmetic of Triangle's normal (a × b, Vec3.normalised) and distance
-    // (T0 · Pn), operation for operation.
+    // faces).
     var f = 0
     while f < faceCount do
-      val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
-      val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
-      val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
-      val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
-      val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
-      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
-      if !(len > 0 && len < Double.PositiveInfinity) then
-        // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
-        throw IllegalArgumentException(s"face $f of a mesh has collinear corners")
-      val nx = cx / len; val ny = cy / len; val nz = cz / len
-      out(4 * f) = nx; out(4 * f + 1) = ny; out(4 * f + 2) = nz
-      out(4 * f + 3) = x0 * nx + y0 * ny + z0 * nz
+      plane(vertices, corners, f) { (nx, ny, nz, d) =>
+        out(4 * f) = nx; out(4 * f + 1) = ny; out(4 * f + 2) = nz; out(4 * f + 3) = d
+      }
       f += 1
     IArray.unsafeFromArray(out)
 
-  /** The box around the corners `corners` name in `vertices`. */
+  /** Runs `body` on the plane of face `f` (Pn's x, y, z and D; see [[Mesh.planes]]), computed
+    * with the arithmetic of [[Triangle]]'s normal (a × b, `Vec3.normalised`) and distance
+    * (T0 · Pn), operation for operation. The face must be proper.
+    *
+    * Perf: `inline` with an inline body, so the four doubles need no tuple or array.
+    */
+  inline def plane[A](vertices: IArray[Double], corners: IArray[Int], f: Int)(
+      inline body: (Double, Double, Double, Double) => A
+  ): A =
+    val i0  = 3 * corners(3 * f); val i1 = 3 * corners(3 * f + 1); val i2 = 3 * corners(3 * f + 2)
+    val x0  = vertices(i0); val y0       = vertices(i0 + 1); val z0       = vertices(i0 + 2)
+    val ax  = vertices(i1) - x0; val ay  = vertices(i1 + 1) - y0; val az  = vertices(i1 + 2) - z0
+    val bx  = vertices(i2) - x0; val by  = vertices(i2 + 1) - y0; val bz  = vertices(i2 + 2) - z0
+    val cx  = ay * bz - az * by; val cy  = az * bx - ax * bz; val cz      = ax * by - ay * bx
+    val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
+    val nx  = cx / len; val ny           = cy / len; val nz               = cz / len
+    body(nx, ny, nz, x0 * nx + y0 * ny + z0 * nz)
+
+  /** The box around the corners `corners` name in `vertices`; every face must be proper. */
   private def extentOf(vertices: IArray[Double], corners: IArray[Int]): Bounds =
-    // Perf: min and max over the corners' coordinates in one loop, no Bounds per face.
+    // Perf: min and max over the corners' coordinates in one loop, no Bounds per face; each face's
+    // cross product checked on the way (the planes themselves are made later, or by the tree).
     var lx, ly, lz = Double.PositiveInfinity
     var hx, hy, hz = Double.NegativeInfinity
     var k          = 0
@@ -282,6 +298,17 @@ object Mesh:
       lx = Math.min(lx, vertices(at)); hx = Math.max(hx, vertices(at))
       ly = Math.min(ly, vertices(at + 1)); hy = Math.max(hy, vertices(at + 1))
       lz = Math.min(lz, vertices(at + 2)); hz = Math.max(hz, vertices(at + 2))
+      if k % 3 == 0 then
+        val i1 = 3 * corners(k + 1); val i2          = 3 * corners(k + 2)
+        val ax = vertices(i1) - vertices(at); val ay = vertices(i1 + 1) - vertices(at + 1)
+        val az = vertices(i1 + 2) - vertices(at + 2)
+        val bx = vertices(i2) - vertices(at); val by = vertices(i2 + 1) - vertices(at + 1)
+        val bz = vertices(i2 + 2) - vertices(at + 2)
+        val cx = ay * bz - az * by; val cy           = az * bx - ax * bz; val cz = ax * by - ay * bx
+        val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
+        if !(len > 0 && len < Double.PositiveInfinity) then
+          // Why: a broken invariant, as with require: the mesh reader keeps proper faces only.
+          throw IllegalArgumentException(s"face ${k / 3} of a mesh has collinear corners")
       k += 1
     Bounds(Vec3(lx, ly, lz), Vec3(hx, hy, hz))
 

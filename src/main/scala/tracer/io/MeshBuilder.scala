@@ -1,6 +1,6 @@
 package tracer.io
 
-import tracer.geometry.{Mesh, Triangle}
+import tracer.geometry.Mesh
 import tracer.math.Vec3
 
 /** An OBJ file's triangles placed as a `<mesh>` says: each vertex placed once (not once per face
@@ -44,14 +44,35 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
 
   /** The numbers of the faces whose placed corners span a triangle, in order. */
   private def properFaces(vertices: IArray[Double]): Array[Int] =
-    def at(i: Int) = Vec3(vertices(3 * i), vertices(3 * i + 1), vertices(3 * i + 2))
-    val c          = obj.corners
-    Array
-      .range(0, obj.faceCount)
-      .filter(f => Triangle.isProper(at(c(3 * f)), at(c(3 * f + 1)), at(c(3 * f + 2))))
+    val c   = obj.corners
+    val out = new Array[Int](obj.faceCount)
+    // Why: the number of proper faces found so far.
+    var n = 0
+    // Perf: Triangle.isProper's arithmetic ((T1 − T0) × (T2 − T0), its length finite and
+    // positive) on plain doubles in a counted loop: no Vec3 or Option per face (a sixth of the
+    // 1.3M-face mesh's reading; docs/performance.md, round 7).
+    var f = 0
+    while f < obj.faceCount do
+      val i0  = 3 * c(3 * f); val i1                = 3 * c(3 * f + 1); val i2  = 3 * c(3 * f + 2)
+      val ax  = vertices(i1) - vertices(i0); val ay = vertices(i1 + 1) - vertices(i0 + 1)
+      val az  = vertices(i1 + 2) - vertices(i0 + 2)
+      val bx  = vertices(i2) - vertices(i0); val by = vertices(i2 + 1) - vertices(i0 + 1)
+      val bz  = vertices(i2 + 2) - vertices(i0 + 2)
+      val cx  = ay * bz - az * by; val cy           = az * bx - ax * bz; val cz = ax * by - ay * bx
+      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
+      if len > 0 && len < Double.PositiveInfinity then
+        out(n) = f
+        n += 1
+      f += 1
+    if n == out.length then out else java.util.Arrays.copyOf(out, n)
 
-  /** The three numbers of each face of `faces` in `corners`. */
+  /** The three numbers of each face of `faces` in `corners` (`corners` itself when `faces` are
+    * all of them, as they usually are: no copy).
+    */
   private def pick(corners: IArray[Int], faces: Array[Int]): IArray[Int] =
+    if 3 * faces.length == corners.length then corners else picked(corners, faces)
+
+  private def picked(corners: IArray[Int], faces: Array[Int]): IArray[Int] =
     val out = new Array[Int](3 * faces.length)
     // Perf: a counted loop copying three numbers a face.
     var k = 0

@@ -226,19 +226,26 @@ private final class ObjParser(reader: BufferedReader, name: String):
       textured &&= cornerT(k) >= 0
       normed &&= cornerN(k) >= 0
       k += 1
+    // Perf: the vt and vn numbers are kept only from the first face that has them on (the ones
+    // before it filled with −1 then), so a file of positions only grows one array of corners, not
+    // three (docs/performance.md, round 7).
+    if textured && !anyTextured then faceT.fill(-1, faceV.length)
+    if normed && !anyNormed then faceN.fill(-1, faceV.length)
     anyTextured ||= textured
     anyNormed ||= normed
     k = 1
     while k < corners - 1 do
       faceV += cornerV(0); faceV += cornerV(k); faceV += cornerV(k + 1)
-      if textured then
-        faceT += cornerT(0); faceT += cornerT(k); faceT += cornerT(k + 1)
-      else
-        faceT += -1; faceT += -1; faceT += -1
-      if normed then
-        faceN += cornerN(0); faceN += cornerN(k); faceN += cornerN(k + 1)
-      else
-        faceN += -1; faceN += -1; faceN += -1
+      if anyTextured then
+        if textured then
+          faceT += cornerT(0); faceT += cornerT(k); faceT += cornerT(k + 1)
+        else
+          faceT += -1; faceT += -1; faceT += -1
+      if anyNormed then
+        if normed then
+          faceN += cornerN(0); faceN += cornerN(k); faceN += cornerN(k + 1)
+        else
+          faceN += -1; faceN += -1; faceN += -1
       k += 1
 
   /** The 1-based or negative OBJ index at line(from until to), as a 0-based index below `defined`. */
@@ -320,6 +327,14 @@ private final class IntBuffer:
     if size == data.length then data = java.util.Arrays.copyOf(data, 2 * size)
     data(size) = i
     size += 1
+
+  /** The number of elements appended so far. */
+  def length: Int = size
+
+  /** Appends `value` until there are `n` elements. */
+  def fill(value: Int, n: Int): Unit =
+    // Why: appended one by one, growing as `+=` does.
+    while size < n do this += value
 
   /** The elements appended so far, in order. */
   def result(): IArray[Int] = IArray.unsafeFromArray(java.util.Arrays.copyOf(data, size))

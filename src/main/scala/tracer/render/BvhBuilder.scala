@@ -30,20 +30,31 @@ private[render] final class Tree(
   * most 2n − 1 nodes), so subtrees can be built at once on different threads ([[build]] with a
   * pool) and the tree is the same, node for node, however they are scheduled.
   *
-  * @param boxLo  each primitive's padded low corner at 3k..3k+2, moved with it by the partitions
-  * @param boxHi  its high corner, likewise
-  * @param centre its box's centre, likewise
+  * Perf: the primitives' boxes are floats rounded outwards: a third less memory and traffic than
+  * doubles (the 1.3M-face mesh's build; docs/performance.md, round 7). The tree's boxes are their
+  * minima and maxima, so the wide tree's rounding leaves them as they are, and every ray that
+  * meets a primitive still meets every box above it. The centres stay doubles: they choose the
+  * splits, and a float has no room for a scene's far-apart shapes (BvhProperties' chain).
+  *
+  * @param boxLo  each primitive's padded low corner at 3k..3k+2, rounded down to a float, moved
+  *   with it by the partitions
+  * @param boxHi  its high corner, rounded up, likewise
+  * @param centre its box's centre, in double precision, likewise
   * @param prims  the primitives' numbers, reordered into leaf order
   * @param without the shapes left out for having no bounds, in order (see [[Tree.unbounded]])
   */
 private[render] final class BvhBuilder private (
-    boxLo: Array[Double],
-    boxHi: Array[Double],
+    boxLo: Array[Float],
+    boxHi: Array[Float],
     centre: Array[Double],
     prims: Array[Int],
     without: Array[Int]
 ):
   import BvhBuilder.*
+
+  // Perf: each primitive's bin along the node's split axis, found once by the binning pass and
+  // read again by the partition (no second division per primitive); a subtree's range is its own.
+  private val bins = new Array[Byte](prims.length)
 
   // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
   private val capacity = Math.max(1, 2 * prims.length - 1)
@@ -164,22 +175,27 @@ private[render] final class BvhBuilder private (
       1
     if n <= MaxLeaf / 2 || extent <= 0 || depth >= MaxDepth then leaf()
     else
+      // Perf: as many bins as primitives below Bins: a node's fixed cost (clearing the bins, the
+      // two sweeps) is per bin, and most nodes are small (the 1.3M-face mesh's build spent more
+      // in the sweeps of 16 bins than on its primitives; docs/performance.md, round 7).
+      val nb               = Math.min(Bins, n)
       def bin(k: Int): Int =
-        Math.min(Bins - 1, ((centre(3 * k + axis) - low) / extent * Bins).toInt)
+        Math.min(nb - 1, ((centre(3 * k + axis) - low) / extent * nb).toInt)
       val binCount = s.binCount
       val binLo    = s.binLo
       val binHi    = s.binHi
       // Bin the primitives along the axis.
       val binCLo = s.binCLo
       val binCHi = s.binCHi
-      java.util.Arrays.fill(binCount, 0)
-      java.util.Arrays.fill(binLo, Double.PositiveInfinity)
-      java.util.Arrays.fill(binHi, Double.NegativeInfinity)
-      java.util.Arrays.fill(binCLo, Double.PositiveInfinity)
-      java.util.Arrays.fill(binCHi, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCount, 0, nb, 0)
+      java.util.Arrays.fill(binLo, 0, 3 * nb, Double.PositiveInfinity)
+      java.util.Arrays.fill(binHi, 0, 3 * nb, Double.NegativeInfinity)
+      java.util.Arrays.fill(binCLo, 0, 3 * nb, Double.PositiveInfinity)
+      java.util.Arrays.fill(binCHi, 0, 3 * nb, Double.NegativeInfinity)
       k = start
       while k < end do
         val b = bin(k)
+        bins(k) = b.toByte
         binCount(b) += 1
         var a = 0
         while a < 3 do
@@ -193,7 +209,7 @@ private[render] final class BvhBuilder private (
       s.sweepStart()
       var c    = 0
       var step = 0
-      while step < Bins - 1 do
+      while step < nb - 1 do
         c += binCount(step)
         s.grow(step)
         s.leftCost(step) = c * area(s.box, 0, 3)
@@ -203,7 +219,7 @@ private[render] final class BvhBuilder private (
       c = 0
       var best     = 0
       var bestCost = Double.PositiveInfinity
-      step = Bins - 1
+      step = nb - 1
       while step > 0 do
         c += binCount(step)
         s.grow(step)
@@ -218,7 +234,7 @@ private[render] final class BvhBuilder private (
         var i = start
         var j = end - 1
         while i <= j do
-          if bin(i) <= best then i += 1
+          if bins(i) <= best then i += 1
           else
             swap(i, j)
             j -= 1
@@ -230,7 +246,7 @@ private[render] final class BvhBuilder private (
         // exact, so the same as from its primitives); a median split finds them itself.
         // Both before the left subtree is built: it reuses the scratch bins.
         val leftKnown  = s.side(binned, 0, best, 6 * left, boxes)
-        val rightKnown = s.side(binned, best + 1, Bins - 1, 6 * (left + 1), boxes)
+        val rightKnown = s.side(binned, best + 1, nb - 1, 6 * (left + 1), boxes)
         val l          = split(left, start, mid, depth + 1, free + 2, s, grain, tasks, leftKnown)
         val r          =
           split(
@@ -249,22 +265,26 @@ private[render] final class BvhBuilder private (
   /** Exchanges the primitives at positions i and j, with their boxes and centroids. */
   private def swap(i: Int, j: Int): Unit =
     val p = prims(i); prims(i) = prims(j); prims(j) = p
+    val b = bins(i); bins(i) = bins(j); bins(j) = b
     var a = 0
     while a < 3 do
       exchange(boxLo, 3 * i + a, 3 * j + a)
       exchange(boxHi, 3 * i + a, 3 * j + a)
-      exchange(centre, 3 * i + a, 3 * j + a)
+      exchangeCentre(3 * i + a, 3 * j + a)
       a += 1
 
-  private def exchange(xs: Array[Double], i: Int, j: Int): Unit =
+  private def exchange(xs: Array[Float], i: Int, j: Int): Unit =
     val x = xs(i); xs(i) = xs(j); xs(j) = x
+
+  private def exchangeCentre(i: Int, j: Int): Unit =
+    val x = centre(i); centre(i) = centre(j); centre(j) = x
 
 /** Construction constants of [[BvhBuilder]], and its two sources of primitives. */
 private[render] object BvhBuilder:
   /** The builder over the shapes of `shapes` that have bounds (the others are left out). */
   def apply(shapes: IndexedSeq[Shape]): BvhBuilder =
-    val boxLo  = new Array[Double](3 * shapes.length)
-    val boxHi  = new Array[Double](3 * shapes.length)
+    val boxLo  = new Array[Float](3 * shapes.length)
+    val boxHi  = new Array[Float](3 * shapes.length)
     val centre = new Array[Double](3 * shapes.length)
     val found  = Array.newBuilder[Int]
     // The shapes without bounds, collected on the same pass: Shape.bounds is asked once a shape.
@@ -288,8 +308,8 @@ private[render] object BvhBuilder:
   /** The builder over the faces of `mesh`, each boxed by its three corners. */
   def faces(mesh: Mesh): BvhBuilder =
     val n      = mesh.faceCount
-    val boxLo  = new Array[Double](3 * n)
-    val boxHi  = new Array[Double](3 * n)
+    val boxLo  = new Array[Float](3 * n)
+    val boxHi  = new Array[Float](3 * n)
     val centre = new Array[Double](3 * n)
     val v      = mesh.vertices
     val c      = mesh.corners
@@ -313,10 +333,12 @@ private[render] object BvhBuilder:
       f += 1
     new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
 
-  /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth. */
+  /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth,
+    * its box rounded outwards to floats.
+    */
   private def setBox(
-      boxLo: Array[Double],
-      boxHi: Array[Double],
+      boxLo: Array[Float],
+      boxHi: Array[Float],
       centre: Array[Double],
       k: Int,
       axis: Int,
@@ -324,8 +346,8 @@ private[render] object BvhBuilder:
       high: Double
   ): Unit =
     val pad = 1e-9 * (1 + Math.abs(low) + Math.abs(high))
-    boxLo(3 * k + axis) = low - pad
-    boxHi(3 * k + axis) = high + pad
+    boxLo(3 * k + axis) = WideTree.down(low - pad)
+    boxHi(3 * k + axis) = WideTree.up(high + pad)
     centre(3 * k + axis) = (low + high) / 2
 
   /** A subtree left for the pool: its node, primitives, depth, first free node number and what
@@ -444,42 +466,21 @@ private[render] object WideTree:
     * of largest surface area that is not a leaf, until it has four or only leaves.
     */
   def collapse(tree: Tree): WideTree =
-    // Perf: arrays sized for the worst case (as many wide nodes as binary ones), filled once.
-    val n     = Math.max(1, tree.size)
+    val gather = Gather(tree)
+    // Perf: a first walk counts the wide nodes, so the arrays are sized exactly (sized as if
+    // every binary node became a wide one, they held three times the nodes made: 128 MB too
+    // many for the 1.3M-face mesh; docs/performance.md, round 7), then filled once.
+    val n     = if tree.size == 0 then 1 else gather.count(0)
     val boxes = new Array[Float](24 * n)
     val child = new Array[Int](Width * n)
     val count = new Array[Int](Width * n)
     val kids  = new Array[Int](Width)
     // Why: the number of wide nodes made so far.
-    var size           = 0
-    def isLeaf(b: Int) = tree.links(2 * b + 1) > 0
-    def area(b: Int)   =
-      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
-      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
-      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
-      x * y + y * z + z * x
+    var size                   = 0
     def make(binary: Int): Int =
       val w = size
       size += 1
-      // Why: the children gathered by opening the largest inner child, a loop on local arrays.
-      var m = 0
-      if isLeaf(binary) then
-        kids(0) = binary; m = 1
-      else
-        kids(0) = tree.links(2 * binary); kids(1) = kids(0) + 1; m = 2
-      var open = true
-      while m < Width && open do
-        var best = -1
-        var k    = 0
-        while k < m do
-          if !isLeaf(kids(k)) && (best < 0 || area(kids(k)) > area(kids(best))) then best = k
-          k += 1
-        if best < 0 then open = false
-        else
-          val left = tree.links(2 * kids(best))
-          kids(best) = left
-          kids(m) = left + 1
-          m += 1
+      val m = gather(binary, kids)
       // Why: loops over the slots: boxes rounded outwards, then each inner child made (which
       // reuses `kids`, so they are copied first).
       val mine = java.util.Arrays.copyOf(kids, m)
@@ -504,7 +505,7 @@ private[render] object WideTree:
       c = 0
       while c < m do
         val b = mine(c)
-        if isLeaf(b) then
+        if gather.isLeaf(b) then
           child(Width * w + c) = tree.links(2 * b)
           count(Width * w + c) = tree.links(2 * b + 1)
         else
@@ -517,12 +518,63 @@ private[render] object WideTree:
       val _ = make(0)
       WideTree(size, boxes, child, count)
 
+  /** The choice of a wide node's children in `tree`, shared by the counting and filling walks. */
+  private final class Gather(tree: Tree):
+    /** True when binary node `b` is a leaf. */
+    def isLeaf(b: Int): Boolean = tree.links(2 * b + 1) > 0
+
+    private def area(b: Int) =
+      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
+      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
+      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
+      x * y + y * z + z * x
+
+    /** Writes the binary nodes that become the children of the wide node made for `binary` into
+      * `kids` and returns their number: its two children, then the child of largest surface
+      * area that is not a leaf opened, until four or only leaves.
+      */
+    def apply(binary: Int, kids: Array[Int]): Int =
+      // Why: the children gathered by opening the largest inner child, a loop on local arrays.
+      var m = 0
+      if isLeaf(binary) then
+        kids(0) = binary; m = 1
+      else
+        kids(0) = tree.links(2 * binary); kids(1) = kids(0) + 1; m = 2
+      // Why: as m.
+      var open = true
+      while m < Width && open do
+        // Why: the best inner child so far, a scan of the few gathered.
+        var best = -1
+        var k    = 0
+        while k < m do
+          if !isLeaf(kids(k)) && (best < 0 || area(kids(k)) > area(kids(best))) then best = k
+          k += 1
+        if best < 0 then open = false
+        else
+          val left = tree.links(2 * kids(best))
+          kids(best) = left
+          kids(m) = left + 1
+          m += 1
+      m
+
+    /** The number of wide nodes the wide node made for `binary` and its descendants take. */
+    def count(binary: Int): Int =
+      val kids = new Array[Int](Width)
+      val m    = apply(binary, kids)
+      // Why: a counted loop over the few children.
+      var total = 1
+      var c     = 0
+      while c < m do
+        if !isLeaf(kids(c)) then total += count(kids(c))
+        c += 1
+      total
+
   /** The largest float at or below `x`. */
-  private def down(x: Double): Float =
+  def down(x: Double): Float =
     val f = x.toFloat
     if f.toDouble > x then Math.nextDown(f) else f
 
   /** The smallest float at or above `x`. */
-  private def up(x: Double): Float =
+  def up(x: Double): Float =
     val f = x.toFloat
     if f.toDouble < x then Math.nextUp(f) else f

@@ -82,14 +82,12 @@ private[render] object Hits:
       case m: Mesh =>
         // Shape.hitOnFace: the face the kernel found (query.face) is the leaf; its plane's Pn is
         // the outward normal. A smooth face blends its corners' normals as its Triangle does.
+        // Perf: the face's normal derived from its corners (Mesh.plane), the mesh holding no
+        // array of planes.
         val f = query.face
-        val n = m.planes
-        facing(ox + dx * t, oy + dy * t, oz + dz * t, n(4 * f), n(4 * f + 1), n(4 * f + 2), f)(
-          dx,
-          dy,
-          dz,
-          query
-        )
+        Mesh.plane(m.vertices, m.corners, f) { (nx, ny, nz, _) =>
+          facing(ox + dx * t, oy + dy * t, oz + dz * t, nx, ny, nz, f)(dx, dy, dz, query)
+        }
         if m.smoothFace(f) then
           val tr = m.face(f)
           tr.cornerNormals match

@@ -20,14 +20,12 @@ import tracer.geometry.Mesh
   */
 final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   // The binary tree is dropped once collapsed: the queries walk the wide one.
-  private val (wide, faces) =
-    val tree = BvhBuilder.faces(mesh).build(pool)
-    (WideTree.collapse(tree), tree.order)
-  private val wb       = wide.boxes
-  private val wc       = wide.child
-  private val wn       = wide.count
-  private val bound    = WideWalk.bound(wb)
-  private val vertices = mesh.vertices
+  private val (wide, faces) = MeshTree.wideTree(mesh, pool)
+  private val wb            = wide.boxes
+  private val wc            = wide.child
+  private val wn            = wide.count
+  private val bound         = WideWalk.bound(wb)
+  private val vertices      = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
   private val (planes, at) = MeshTree.leafOrder(mesh, faces)
@@ -235,20 +233,36 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       dz
     )
 
-/** Laying a mesh's faces out for its tree. */
+/** Building a mesh's tree and laying its faces out for it. */
 private object MeshTree:
-  /** The planes (4 doubles a face) and corner offsets (3 ints) of `mesh`'s faces `order`. */
+  /** The wide tree over `mesh`'s faces and their numbers in leaf order.
+    *
+    * Perf: in a method of its own, so that the builder's arrays and the binary tree are garbage
+    * once it returns (the constructor runs interpreted, and a dead local of its frame would keep
+    * them reachable while the leaf-order arrays are made: 238 MB for the 1.3M-face mesh).
+    */
+  def wideTree(mesh: Mesh, pool: Option[ExecutionContext]): (WideTree, Array[Int]) =
+    val tree = BvhBuilder.faces(mesh).build(pool)
+    (WideTree.collapse(tree), tree.order)
+
+  /** The planes (4 doubles a face, as [[tracer.geometry.Mesh.planes]] holds them) and corner
+    * offsets (3 ints) of `mesh`'s faces `order`.
+    */
   def leafOrder(mesh: Mesh, order: Array[Int]): (Array[Double], Array[Int]) =
-    val planes = new Array[Double](4 * order.length)
-    val at     = new Array[Int](3 * order.length)
-    // Perf: one pass copying each face's plane and corner offsets into leaf order, in a method
-    // of its own so that it is compiled apart from the constructor.
+    val planes   = new Array[Double](4 * order.length)
+    val at       = new Array[Int](3 * order.length)
+    val vertices = mesh.vertices
+    val corners  = mesh.corners
+    // Perf: one pass computing each face's plane from its corners (Mesh.plane: the mesh keeps no
+    // copy of its own, docs/performance.md, round 7) and copying its corner offsets, in leaf
+    // order, in a method of its own so that it is compiled apart from the constructor.
     var k = 0
     while k < order.length do
       val f = order(k)
-      planes(4 * k) = mesh.planes(4 * f); planes(4 * k + 1) = mesh.planes(4 * f + 1)
-      planes(4 * k + 2) = mesh.planes(4 * f + 2); planes(4 * k + 3) = mesh.planes(4 * f + 3)
-      at(3 * k) = 3 * mesh.corners(3 * f); at(3 * k + 1) = 3 * mesh.corners(3 * f + 1)
-      at(3 * k + 2) = 3 * mesh.corners(3 * f + 2)
+      Mesh.plane(vertices, corners, f) { (nx, ny, nz, d) =>
+        planes(4 * k) = nx; planes(4 * k + 1) = ny; planes(4 * k + 2) = nz; planes(4 * k + 3) = d
+      }
+      at(3 * k) = 3 * corners(3 * f); at(3 * k + 1) = 3 * corners(3 * f + 1)
+      at(3 * k + 2) = 3 * corners(3 * f + 2)
       k += 1
     (planes, at)
