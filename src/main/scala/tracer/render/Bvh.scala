@@ -1,7 +1,7 @@
 package tracer.render
 
 import scala.concurrent.ExecutionContext
-import tracer.geometry.Shape
+import tracer.geometry.{Mesh, Shape}
 
 /** A bounding volume hierarchy over the bounded shapes of a scene, built once with the binned
   * surface area heuristic ([[BvhBuilder]]) and stored as flat arrays, with its primitives in leaf
@@ -24,6 +24,9 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
   private val wc    = wide.child
   private val wn    = wide.count
   private val bound = WideWalk.bound(wb)
+
+  /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
+  private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
 
   /** The indices, in order, of the shapes left out of the hierarchy for having no bounds. */
   val unbounded: Array[Int] = tree.unbounded

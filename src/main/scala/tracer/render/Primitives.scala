@@ -53,11 +53,14 @@ object Route:
   * @param shapes all the scene's shapes
   * @param order  the indices in `shapes` of the primitives, in leaf order
   * @param pool   where to build the meshes' trees (see [[MeshTree]])
+  * @param known  a mesh's tree when one was built already (by another [[Primitives]] of the same
+  *   world), so it is not built twice
   */
 final class Primitives(
     shapes: IndexedSeq[Shape],
     order: Array[Int],
-    pool: Option[ExecutionContext] = None
+    pool: Option[ExecutionContext] = None,
+    known: Mesh => Option[MeshTree] = _ => None
 ):
   // Perf: everything a leaf test reads, contiguous per primitive: no Shape object is reached on
   // the fast paths (docs/performance.md, round 4).
@@ -65,6 +68,9 @@ final class Primitives(
   private[render] val kind  = new Array[Byte](order.length)
   private[render] val index = order
   private[render] val all   = shapes
+
+  // The meshes whose trees these are, in the same order.
+  private val owners = Array.newBuilder[Mesh]
 
   /** The meshes' trees; a mesh primitive's first double is the number of its tree here. */
   private[render] val meshes: Array[MeshTree] =
@@ -76,12 +82,20 @@ final class Primitives(
       kind(k) = Primitives.store(shapes(order(k)), data, Primitives.Stride * k).ordinal.toByte
       shapes(order(k)) match
         case mesh: Mesh =>
-          trees += MeshTree(mesh, pool)
+          trees += known(mesh).getOrElse(MeshTree(mesh, pool))
+          owners += mesh
           data(Primitives.Stride * k) = m
           m += 1
         case _ => ()
       k += 1
     trees.result()
+
+  private val meshOwners = owners.result()
+
+  /** The tree built here for `mesh` (the very object), if it is one of these primitives. */
+  private[render] def treeOf(mesh: Mesh): Option[MeshTree] =
+    val i = meshOwners.indexWhere(_ eq mesh)
+    if i < 0 then None else Some(meshes(i))
 
   /** The number of primitives. */
   def size: Int = order.length

@@ -58,7 +58,7 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
 
   /** Every shape as a primitive of its own, in index order, for the beams (empty without). */
   private[render] val each: Primitives =
-    if beams then Primitives(shapes.toIndexedSeq, shapes.indices.toArray)
+    if beams then Primitives(shapes.toIndexedSeq, shapes.indices.toArray, known = bvh.meshTree)
     else Primitives(IndexedSeq.empty, Array.emptyIntArray)
 
   // Perf: each shape's box for the beams, lo then hi at 6i, widened by 10⁻⁷ of its coordinates'
@@ -77,6 +77,11 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
 
   /** The number of shapes. */
   def size: Int = shapes.length
+
+  /** The tree the hierarchy built for `mesh`, one of the world's shapes (tests observe that it is
+    * built once).
+    */
+  private[render] def meshTree(mesh: tracer.geometry.Mesh): Option[MeshTree] = bvh.meshTree(mesh)
 
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)

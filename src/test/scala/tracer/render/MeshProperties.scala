@@ -186,6 +186,19 @@ class MeshProperties extends ScalaCheckSuite:
       assert(parallel.boxes.sameElements(serial.boxes))
     finally pool.shutdown()
 
+  test("a world whose area lights test shapes by beam builds each mesh's tree once"):
+    val m     = Mesh(IArray(0.0, 0, 0, 1, 0, 0, 0, 1, 0), IArray(0, 1, 2))
+    val light = tracer.scene.Light(
+      Vec3(0, 5, 0),
+      area = Some(tracer.scene.AreaLight(Vec3(1, 0, 0), Vec3(0, 0, 1), 2, 2))
+    )
+    val world = World(scene(Vector(before, SceneObject(m))).copy(lights = Vector(light)))
+    assert(world.beams)
+    val trees = world.each.meshes
+    assertEquals(trees.length, 1)
+    assert(world.each.treeOf(m).exists(_ eq trees(0)))
+    assert(world.meshTree(m).exists(_ eq trees(0)), "the beams' tree is the hierarchy's")
+
   test("texture coordinates: a textured face's, and (0, 0)-(1, 0)-(0, 1) on one without"):
     val m = Mesh(
       IArray(0.0, 0, 0, 1, 0, 0, 0, 1, 0),
