@@ -119,7 +119,8 @@ private final class PpmReader(bytes: Array[Byte]):
       val s =
         if bytesPerSample == 1 then bytes(start + i) & 0xff
         else ((bytes(start + 2 * i) & 0xff) << 8) | (bytes(start + 2 * i + 1) & 0xff)
-      if s > maxval then fail(s"sample ${i + 1} ${pixelOf(i, width)} is $s, above the maxval $maxval")
+      if s > maxval then
+        fail(s"sample ${i + 1} ${pixelOf(i, width)} is $s, above the maxval $maxval")
       samples(i) = s.toChar
       i += 1
     Bitmap.owning(width, height, maxval, samples)

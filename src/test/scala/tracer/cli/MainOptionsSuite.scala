@@ -154,8 +154,15 @@ class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
     // Scenes in other directories, with textures and meshes relative to them (kept for the next
     // frame, and read again after a frame without them); -a and -t.
     val frames =
-      List("textures.xml", "textures.xml", "meshes.xml", "meshes.xml", "materials.xml", "textures.xml")
-    val list   = frames.zipWithIndex
+      List(
+        "textures.xml",
+        "textures.xml",
+        "meshes.xml",
+        "meshes.xml",
+        "materials.xml",
+        "textures.xml"
+      )
+    val list = frames.zipWithIndex
       .map((scene, i) => s"${scenes.resolve(scene)}\tframe $i.png")
       .mkString("# frames\n\n", "\n", "\n")
     Files.writeString(d.resolve("list.txt"), list)

@@ -17,7 +17,7 @@ class FileReuseSuite extends munit.FunSuite:
   private final class Counted:
     val reuse = FileReuse[String]()
     // Why: the number of reads is what these tests observe.
-    var reads                      = 0
+    var reads                                     = 0
     def apply(path: Path): Either[String, String] =
       reuse(path) { p =>
         reads += 1
