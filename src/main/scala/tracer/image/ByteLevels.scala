@@ -55,7 +55,7 @@ final class ByteLevels(encoding: Encoding):
       if k >= 1 && c <= upper(k) then direct(c) else k
 
   /** The channel value c encoded, as a value that a bitmap of maxval 255 stores as
-    * [[sample]](c): sample / 255.
+    * [[sample]] of c, over 255.
     */
   def encoded(c: Double): Double = sample(c) / 255.0
 
