@@ -23,7 +23,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
   private val wb    = wide.boxes
   private val wc    = wide.child
   private val wn    = wide.count
-  private val bound = WideWalk.bound(wb)
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
@@ -62,83 +61,75 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
   ): Int =
     // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
     // pushed farthest first with their entry distances, so the nearest is walked next and a popped
-    // slot beyond the best hit is dropped untested; the boxes' slab test in float, widened so it
-    // only ever errs towards entering (WideWalk.walkFloat); leaves test the double-precision
-    // primitives (docs/performance.md, rounds 5 and 7; WorldBench).
+    // slot beyond the best hit is dropped untested; leaves test the double-precision primitives
+    // (docs/performance.md, round 5; WorldBench).
     val stack   = query.nodes
     val entries = query.entries
     var best    = limitIndex
     var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
     var face = -1
-    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) {
-      (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
-        var sp =
-          if wide.size == 0 then 0
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            ordered = true
+          )
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
+        if entries(sp) <= bestT then
+          val count = wn(slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val i = prims.index(k)
+                if t < bestT || i < best then
+                  bestT = t
+                  best = i
+                  face = query.meshFace
+              k += 1
           else
-            WideWalk.pushFloat(
+            sp = WideWalk.push(
               wb,
               wn,
-              0,
-              0,
+              wc(slot),
+              sp,
               stack,
               entries,
+              ox,
+              oy,
+              oz,
               ix,
               iy,
               iz,
-              nx,
-              ny,
-              nz,
-              fx,
-              fy,
-              fz,
               sx,
               sy,
               sz,
               bestT,
               ordered = true
             )
-        while sp > 0 do
-          sp -= 1
-          val slot = stack(sp)
-          // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
-          if entries(sp) <= bestT then
-            val count = wn(slot)
-            if count > 0 then
-              var k   = wc(slot)
-              val end = k + count
-              while k < end do
-                val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
-                if t <= bestT && t < Double.PositiveInfinity then
-                  val i = prims.index(k)
-                  if t < bestT || i < best then
-                    bestT = t
-                    best = i
-                    face = query.meshFace
-                k += 1
-            else
-              sp = WideWalk.pushFloat(
-                wb,
-                wn,
-                wc(slot),
-                sp,
-                stack,
-                entries,
-                ix,
-                iy,
-                iz,
-                nx,
-                ny,
-                nz,
-                fx,
-                fy,
-                fz,
-                sx,
-                sy,
-                sz,
-                bestT,
-                ordered = true
-              )
     }
     query.distance = bestT
     query.face = face
@@ -160,68 +151,61 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
     val stack   = query.nodes
     val entries = query.entries
-    WideWalk.walkFloat(ox, oy, oz, dx, dy, dz, bound) {
-      (ix, iy, iz, nx, ny, nz, fx, fy, fz, sx, sy, sz) =>
-        var hit = false
-        var sp  =
-          if wide.size == 0 then 0
-          else
-            WideWalk.pushFloat(
-              wb,
-              wn,
-              0,
-              0,
-              stack,
-              entries,
-              ix,
-              iy,
-              iz,
-              nx,
-              ny,
-              nz,
-              fx,
-              fy,
-              fz,
-              sx,
-              sy,
-              sz,
-              limit,
-              ordered = false
-            )
-        while sp > 0 && !hit do
-          sp -= 1
-          val slot  = stack(sp)
-          val count = wn(slot)
-          if count > 0 then
-            var k   = wc(slot)
-            val end = k + count
-            while k < end && !hit do
-              hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
-              k += 1
-          else
-            sp = WideWalk.pushFloat(
-              wb,
-              wn,
-              wc(slot),
-              sp,
-              stack,
-              entries,
-              ix,
-              iy,
-              iz,
-              nx,
-              ny,
-              nz,
-              fx,
-              fy,
-              fz,
-              sx,
-              sy,
-              sz,
-              limit,
-              ordered = false
-            )
-        hit
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var hit = false
+      var sp  =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = wn(slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+            k += 1
+        else
+          sp = WideWalk.push(
+            wb,
+            wn,
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
+      hit
     }
 
   /** [[nearest]] on the binary tree the wide one was collapsed from: the same answers, kept to
