@@ -47,8 +47,8 @@ class DocsSuite extends munit.FunSuite:
     val code   = "`[^`\n]*`".r
     val pages  = home.resolve("README.md") :: citing.filter(_.startsWith(home.resolve("docs")))
     val broken = for
-      page   <- pages.filter(_.toString.endsWith(".md"))
-      text    = code.replaceAllIn(Files.readString(page), "")
+      page <- pages.filter(_.toString.endsWith(".md"))
+      text = code.replaceAllIn(Files.readString(page), "")
       target <- link.findAllMatchIn(text).map(_.group(1)).toList
       if !Files.exists(page.getParent.resolve(target))
     yield s"${home.relativize(page)} links to $target"
