@@ -5,7 +5,7 @@ import scala.concurrent.{Await, ExecutionContext, Future}
 import tracer.geometry.{Mesh, Shape}
 
 /** A built hierarchy of `size` nodes as flat arrays: node n's box at `boxes(6n until 6n + 6)` (low x, y, z, then
-  * high x, y, z), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
+  * high x, y, z; floats, being the primitives' float boxes' minima and maxima), and `links(2n)`, `links(2n + 1)`: for an inner node its left child (the right
   * one follows it) and 0, for a leaf the first of its primitives and their count (≥ 1).
   * `order` lists the indexed shapes' indices in leaf order; `unbounded` the indices, in order,
   * of the shapes left out for having no bounds (planes), which the builder found as it asked
@@ -13,7 +13,7 @@ import tracer.geometry.{Mesh, Shape}
   */
 private[render] final class Tree(
     val size: Int,
-    val boxes: Array[Double],
+    val boxes: Array[Float],
     val links: Array[Int],
     val order: Array[Int],
     val unbounded: Array[Int]
@@ -32,7 +32,8 @@ private[render] final class Tree(
   *
   * Perf: the primitives' boxes are floats rounded outwards: a third less memory and traffic than
   * doubles (the 1.3M-face mesh's build; docs/performance.md, round 7). The tree's boxes are their
-  * minima and maxima, so the wide tree's rounding leaves them as they are, and every ray that
+  * minima and maxima, floats exactly (kept as floats), so the wide tree's rounding leaves them
+  * as they are, and every ray that
   * meets a primitive still meets every box above it. The centres stay doubles: they choose the
   * splits, and a float has no room for a scene's far-apart shapes (BvhProperties' chain).
   *
@@ -58,11 +59,13 @@ private[render] final class BvhBuilder private (
 
   // The nodes: a binary tree with n leaves has 2n − 1 nodes, so the arrays never grow.
   private val capacity = Math.max(1, 2 * prims.length - 1)
-  private val boxes    = new Array[Double](6 * capacity)
-  private val links    = new Array[Int](2 * capacity)
+  // Perf: floats, exactly: every node's box is a minimum and maximum of the primitives' float
+  // boxes (half the 1.3M-face mesh's largest array, 124 → 62 MB; docs/performance.md, round 8).
+  private val boxes = new Array[Float](6 * capacity)
+  private val links = new Array[Int](2 * capacity)
 
-  /** Builds the tree, on `pool` when one is given (the render's threads; the top levels on this
-    * thread, then the subtrees below them as tasks) and on this thread alone otherwise. Its
+  /** Builds the tree, on `pool` when one is given (the render's threads, each node's subtrees as
+    * tasks of their own: [[task]]) and on this thread alone otherwise. Its
     * arrays may be longer than its nodes (`Tree.size` says how many are used; unused numbers are
     * never linked).
     */
@@ -71,25 +74,9 @@ private[render] final class BvhBuilder private (
     else
       pool match
         case Some(context) if prims.length >= ParallelFrom =>
-          val tasks = Vector.newBuilder[Task]
-          val top   = split(0, 0, prims.length, 0, 1, Scratch(), prims.length / Tasks, tasks)
           given ExecutionContext = context
-          val below              = Future.traverse(tasks.result()) { task =>
-            Future(
-              split(
-                task.node,
-                task.start,
-                task.end,
-                task.depth,
-                task.free,
-                Scratch(),
-                0,
-                Vector.newBuilder,
-                task.known
-              )
-            )
-          }
-          Tree(top + Await.result(below, Duration.Inf).sum, boxes, links, prims, without)
+          val made = Await.result(task(Task(0, 0, prims.length, 0, 1, Known.None)), Duration.Inf)
+          Tree(made, boxes, links, prims, without)
         case _ =>
           Tree(
             split(0, 0, prims.length, 0, 1, Scratch(), 0, Vector.newBuilder),
@@ -99,11 +86,46 @@ private[render] final class BvhBuilder private (
             without
           )
 
+  /** The subtree of `t` built on the pool, its number of nodes when done: a node of more than
+    * [[Grain]] primitives is split alone and its two children are tasks of their own, a smaller
+    * one is built whole on one thread.
+    *
+    * Perf: only the root is split on one thread; every level below it runs on the pool (the
+    * top three levels ran on one thread, a fifth of the 1.3M-face mesh's build, and six subtrees
+    * of uneven sizes kept the threads unevenly busy; docs/performance.md, round 8).
+    */
+  private def task(t: Task)(using ExecutionContext): Future[Int] =
+    Future {
+      val below = Vector.newBuilder[Task]
+      val big   = t.end - t.start > Grain
+      val made  =
+        divide(
+          t.node,
+          t.start,
+          t.end,
+          t.depth,
+          t.free,
+          Scratch(),
+          if big then Int.MaxValue else 0,
+          below,
+          t.known
+        )
+      (made, below.result())
+    }.flatMap { (made, below) =>
+      if below.isEmpty then Future.successful(made)
+      else Future.traverse(below)(t => task(t)).map(made + _.sum)
+    }
+
   /** The surface area of the box with low corner b(l..l+2) and high corner b(h..h+2). */
-  private def area(b: Array[Double], l: Int, h: Int): Double =
-    val dx = b(h) - b(l)
-    val dy = b(h + 1) - b(l + 1)
-    val dz = b(h + 2) - b(l + 2)
+  private def area(b: Array[Float], l: Int, h: Int): Double =
+    surface(
+      b(h).toDouble - b(l),
+      b(h + 1).toDouble - b(l + 1),
+      b(h + 2).toDouble - b(l + 2)
+    )
+
+  /** The surface area of a box of sides dx, dy and dz (0 for an empty one: dx < 0). */
+  private def surface(dx: Double, dy: Double, dz: Double): Double =
     if dx < 0 then 0 else 2 * (dx * dy + dy * dz + dz * dx)
 
   /** Fills node `node` with prims(start until end), splitting it while that pays; its children
@@ -151,7 +173,7 @@ private[render] final class BvhBuilder private (
       ch0 = known.hi0; ch1 = known.hi1; ch2 = known.hi2
     else
       for a <- 0 until 3 do
-        boxes(nb + a) = Double.PositiveInfinity; boxes(nb + 3 + a) = Double.NegativeInfinity
+        boxes(nb + a) = Float.PositiveInfinity; boxes(nb + 3 + a) = Float.NegativeInfinity
     var k = if known.found then end else start
     while k < end do
       var a = 0
@@ -166,10 +188,13 @@ private[render] final class BvhBuilder private (
       k += 1
     val n = end - start
     // Split along the axis where the centroids spread most.
-    val (axis, low, extent) =
-      if ch0 - cl0 >= ch1 - cl1 && ch0 - cl0 >= ch2 - cl2 then (0, cl0, ch0 - cl0)
-      else if ch1 - cl1 >= ch2 - cl2 then (1, cl1, ch1 - cl1)
-      else (2, cl2, ch2 - cl2)
+    // Perf: the axis, its low end and extent as three values, no tuple (boxed) per node.
+    val axis =
+      if ch0 - cl0 >= ch1 - cl1 && ch0 - cl0 >= ch2 - cl2 then 0
+      else if ch1 - cl1 >= ch2 - cl2 then 1
+      else 2
+    val low         = if axis == 0 then cl0 else if axis == 1 then cl1 else cl2
+    val extent      = if axis == 0 then ch0 - cl0 else if axis == 1 then ch1 - cl1 else ch2 - cl2
     def leaf(): Int =
       links(2 * node) = start; links(2 * node + 1) = n
       1
@@ -206,24 +231,34 @@ private[render] final class BvhBuilder private (
           a += 1
         k += 1
       // Sweep from the left: leftCost(s) = count · area of bins 0..s.
-      s.sweepStart()
-      var c    = 0
-      var step = 0
+      // Perf: each sweep's box in six locals (registers), not in the scratch array: the sweeps
+      // were a quarter of the 1.3M-face mesh's build (docs/performance.md, round 8). The same
+      // minima, maxima and area as before, so the same costs bit for bit.
+      val leftCost   = s.leftCost
+      var x0, y0, z0 = Double.PositiveInfinity
+      var x1, y1, z1 = Double.NegativeInfinity
+      var c          = 0
+      var step       = 0
       while step < nb - 1 do
         c += binCount(step)
-        s.grow(step)
-        s.leftCost(step) = c * area(s.box, 0, 3)
+        val at = 3 * step
+        x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
+        x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
+        leftCost(step) = c * surface(x1 - x0, y1 - y0, z1 - z0)
         step += 1
       // Sweep from the right, keeping the cheapest split.
-      s.sweepStart()
+      x0 = Double.PositiveInfinity; y0 = Double.PositiveInfinity; z0 = Double.PositiveInfinity
+      x1 = Double.NegativeInfinity; y1 = Double.NegativeInfinity; z1 = Double.NegativeInfinity
       c = 0
       var best     = 0
       var bestCost = Double.PositiveInfinity
       step = nb - 1
       while step > 0 do
         c += binCount(step)
-        s.grow(step)
-        val cost = s.leftCost(step - 1) + c * area(s.box, 0, 3)
+        val at = 3 * step
+        x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
+        x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
+        val cost = leftCost(step - 1) + c * surface(x1 - x0, y1 - y0, z1 - z0)
         if cost < bestCost then
           bestCost = cost
           best = step - 1
@@ -305,17 +340,47 @@ private[render] object BvhBuilder:
       i += 1
     new BvhBuilder(boxLo, boxHi, centre, found.result(), without.result())
 
-  /** The builder over the faces of `mesh`, each boxed by its three corners. */
-  def faces(mesh: Mesh): BvhBuilder =
+  /** The builder over the faces of `mesh`, each boxed by its three corners, on `pool` when one
+    * is given (in parts, as [[inParts]]).
+    */
+  def faces(mesh: Mesh, pool: Option[ExecutionContext] = None): BvhBuilder =
     val n      = mesh.faceCount
     val boxLo  = new Array[Float](3 * n)
     val boxHi  = new Array[Float](3 * n)
     val centre = new Array[Double](3 * n)
-    val v      = mesh.vertices
-    val c      = mesh.corners
+    inParts(n, pool)((from, to) => boxFaces(mesh, boxLo, boxHi, centre, from, to))
+    new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
+
+  /** Runs `part(from, to)` over consecutive ranges covering 0 until n: on `pool`, when one is
+    * given and n is at least [[ParallelFrom]], in parts of [[Part]], and waits for them all; else
+    * once on this thread. The parts must write disjoint places.
+    *
+    * Perf: the passes over a big mesh's faces before and after its build ran on one thread, cold
+    * (a tenth of the 1.3M-face mesh's whole run); in parts they run on both threads, and the
+    * method that does a part is compiled after the first few (docs/performance.md, round 8).
+    */
+  def inParts(n: Int, pool: Option[ExecutionContext])(part: (Int, Int) => Unit): Unit =
+    pool match
+      case Some(context) if n >= ParallelFrom =>
+        given ExecutionContext = context
+        val parts = (0 until n by Part).map(from => Future(part(from, Math.min(n, from + Part))))
+        Await.result(Future.sequence(parts), Duration.Inf): Unit
+      case _ => part(0, n)
+
+  /** Writes the boxes of `mesh`'s faces from until to. */
+  private def boxFaces(
+      mesh: Mesh,
+      boxLo: Array[Float],
+      boxHi: Array[Float],
+      centre: Array[Double],
+      from: Int,
+      to: Int
+  ): Unit =
+    val v = mesh.vertices
+    val c = mesh.corners
     // Perf: one pass over the faces on the mesh's arrays, no Bounds or Triangle per face.
-    var f = 0
-    while f < n do
+    var f = from
+    while f < to do
       val i0 = 3 * c(3 * f); val i1 = 3 * c(3 * f + 1); val i2 = 3 * c(3 * f + 2)
       var a  = 0
       while a < 3 do
@@ -331,7 +396,6 @@ private[render] object BvhBuilder:
         )
         a += 1
       f += 1
-    new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray)
 
   /** Primitive k's extent along `axis`, padded so flat boxes (a triangle in a plane) have depth,
     * its box rounded outwards to floats.
@@ -385,14 +449,13 @@ private[render] object BvhBuilder:
     val binLo    = new Array[Double](3 * Bins)
     val binHi    = new Array[Double](3 * Bins)
     val leftCost = new Array[Double](Bins)
-    val box      = new Array[Double](6)
     val binCLo   = new Array[Double](3 * Bins)
     val binCHi   = new Array[Double](3 * Bins)
 
     /** When `binned`: writes the box of bins `from` to `to` into `boxes` at `at` and returns
       * their centroids' box; else [[Known.None]].
       */
-    def side(binned: Boolean, from: Int, to: Int, at: Int, boxes: Array[Double]): Known =
+    def side(binned: Boolean, from: Int, to: Int, at: Int, boxes: Array[Float]): Known =
       if !binned then Known.None
       else
         // Why: the bins' boxes gathered in a counted loop.
@@ -410,28 +473,21 @@ private[render] object BvhBuilder:
           d0 = Math.max(d0, binCHi(3 * b)); d1 = Math.max(d1, binCHi(3 * b + 1))
           d2 = Math.max(d2, binCHi(3 * b + 2))
           b += 1
-        boxes(at) = l0; boxes(at + 1) = l1; boxes(at + 2) = l2
-        boxes(at + 3) = h0; boxes(at + 4) = h1; boxes(at + 5) = h2
+        // The bins' boxes are the primitives' floats, so these conversions are exact.
+        boxes(at) = l0.toFloat; boxes(at + 1) = l1.toFloat; boxes(at + 2) = l2.toFloat
+        boxes(at + 3) = h0.toFloat; boxes(at + 4) = h1.toFloat; boxes(at + 5) = h2.toFloat
         Known(true, c0, c1, c2, d0, d1, d2)
-
-    def sweepStart(): Unit =
-      box(0) = Double.PositiveInfinity; box(1) = Double.PositiveInfinity
-      box(2) = Double.PositiveInfinity; box(3) = Double.NegativeInfinity
-      box(4) = Double.NegativeInfinity; box(5) = Double.NegativeInfinity
-
-    def grow(b: Int): Unit =
-      // Perf: the three axes in a counted loop on the scratch arrays.
-      var a = 0
-      while a < 3 do
-        box(a) = box(a) min binLo(3 * b + a)
-        box(3 + a) = box(3 + a) max binHi(3 * b + a)
-        a += 1
 
   /** The fewest primitives worth building on a pool. */
   val ParallelFrom = 65536
 
-  /** Subtrees per build on a pool, at most about: enough to keep the threads evenly busy. */
-  val Tasks = 6
+  /** The faces of one part of [[inParts]]: many more parts than threads. */
+  val Part = 32768
+
+  /** The most primitives of a subtree built whole by one task on a pool: many more subtrees
+    * than threads (about a hundred for the 1.3M-face mesh), so they keep the threads evenly busy.
+    */
+  val Grain = 16384
 
   /** The most shapes a leaf holds when splitting would cost more. */
   val MaxLeaf = 4
@@ -463,31 +519,82 @@ private[render] object WideTree:
   val Width = 4
 
   /** The wide tree of `tree`: each node takes its binary node's two children and opens the child
-    * of largest surface area that is not a leaf, until it has four or only leaves.
+    * of largest surface area that is not a leaf, until it has four or only leaves. On `pool`,
+    * when one is given and the tree is big, the subtrees below the root's node are counted and
+    * filled as tasks of their own, each at the numbers the walk on one thread gives them (the
+    * same arrays, `MeshProperties`).
     */
-  def collapse(tree: Tree): WideTree =
+  def collapse(tree: Tree, pool: Option[ExecutionContext] = None): WideTree =
     val gather = Gather(tree)
     // Perf: a first walk counts the wide nodes, so the arrays are sized exactly (sized as if
     // every binary node became a wide one, they held three times the nodes made: 128 MB too
-    // many for the 1.3M-face mesh; docs/performance.md, round 7), then filled once.
-    val n     = if tree.size == 0 then 1 else gather.count(0)
+    // many for the 1.3M-face mesh; docs/performance.md, round 7), then filled once. On a pool
+    // both walks run on the threads, a subtree a task (they were a twentieth of the 1.3M-face
+    // mesh's whole run on one thread; round 8).
+    if tree.size == 0 then
+      WideTree(0, new Array[Float](24), new Array[Int](Width), new Array[Int](Width))
+    else
+      pool match
+        case Some(context) if tree.size >= BvhBuilder.ParallelFrom =>
+          given ExecutionContext = context
+          val kids               = new Array[Int](Width)
+          val top                = java.util.Arrays.copyOf(kids, gather(0, kids))
+          val sizes              = Await.result(
+            Future.traverse(top.toVector)(b =>
+              Future(if gather.isLeaf(b) then 0 else gather.count(b))
+            ),
+            Duration.Inf
+          )
+          // The number of each inner child's wide node: its subtree follows the earlier ones'.
+          val starts = sizes.scanLeft(1)(_ + _)
+          val fill   = Fill(tree, gather, starts.last)
+          fill.slots(0, top)
+          top.indices.foreach(c => fill.link(0, c, top(c), starts(c)))
+          val inner = top.indices.filter(c => !gather.isLeaf(top(c))).toVector
+          Await.result(
+            Future.traverse(inner)(c => Future(fill.make(top(c), starts(c)))),
+            Duration.Inf
+          ): Unit
+          WideTree(starts.last, fill.boxes, fill.child, fill.count)
+        case _ =>
+          val n    = gather.count(0)
+          val fill = Fill(tree, gather, n)
+          val _    = fill.make(0, 0)
+          WideTree(n, fill.boxes, fill.child, fill.count)
+
+  /** The arrays of a wide tree of `n` nodes over `tree`, and the walk that fills them. */
+  private final class Fill(tree: Tree, gather: Gather, n: Int):
     val boxes = new Array[Float](24 * n)
     val child = new Array[Int](Width * n)
     val count = new Array[Int](Width * n)
-    val kids  = new Array[Int](Width)
-    // Why: the number of wide nodes made so far.
-    var size                   = 0
-    def make(binary: Int): Int =
-      val w = size
-      size += 1
-      val m = gather(binary, kids)
-      // Why: loops over the slots: boxes rounded outwards, then each inner child made (which
-      // reuses `kids`, so they are copied first).
-      val mine = java.util.Arrays.copyOf(kids, m)
+
+    /** Fills wide node `w` for binary node `binary` and the nodes below it, numbered from w + 1
+      * on in the order they are met (depth first, children in order); returns the first number
+      * after them.
+      */
+    def make(binary: Int, w: Int): Int =
+      val kids = new Array[Int](Width)
+      val mine = java.util.Arrays.copyOf(kids, gather(binary, kids))
+      slots(w, mine)
+      // Why: the next free number, advanced by each inner child's subtree, in a counted loop.
+      var next = w + 1
       var c    = 0
+      while c < mine.length do
+        val b = mine(c)
+        link(w, c, b, next)
+        if !gather.isLeaf(b) then next = make(b, next)
+        c += 1
+      next
+
+    /** Writes wide node w's child boxes for the binary nodes `mine`, rounded outwards, and marks
+      * the slots past them empty.
+      */
+    def slots(w: Int, mine: Array[Int]): Unit =
+      // Why: loops over the slots and their axes.
+      var c = 0
       while c < Width do
         val at = 24 * w + c
-        if c < m then
+        if c < mine.length then
           val b = mine(c)
           var a = 0
           while a < 3 do
@@ -502,21 +609,17 @@ private[render] object WideTree:
             a += 1
           count(Width * w + c) = -1
         c += 1
-      c = 0
-      while c < m do
-        val b = mine(c)
-        if gather.isLeaf(b) then
-          child(Width * w + c) = tree.links(2 * b)
-          count(Width * w + c) = tree.links(2 * b + 1)
-        else
-          child(Width * w + c) = make(b)
-          count(Width * w + c) = 0
-        c += 1
-      w
-    if tree.size == 0 then WideTree(0, boxes, child, count)
-    else
-      val _ = make(0)
-      WideTree(size, boxes, child, count)
+
+    /** Writes slot c of wide node w: binary node b's leaf range, or (an inner node) the wide node
+      * numbered `at`.
+      */
+    def link(w: Int, c: Int, b: Int, at: Int): Unit =
+      if gather.isLeaf(b) then
+        child(Width * w + c) = tree.links(2 * b)
+        count(Width * w + c) = tree.links(2 * b + 1)
+      else
+        child(Width * w + c) = at
+        count(Width * w + c) = 0
 
   /** The choice of a wide node's children in `tree`, shared by the counting and filling walks. */
   private final class Gather(tree: Tree):
@@ -524,9 +627,10 @@ private[render] object WideTree:
     def isLeaf(b: Int): Boolean = tree.links(2 * b + 1) > 0
 
     private def area(b: Int) =
-      val x = tree.boxes(6 * b + 3) - tree.boxes(6 * b)
-      val y = tree.boxes(6 * b + 4) - tree.boxes(6 * b + 1)
-      val z = tree.boxes(6 * b + 5) - tree.boxes(6 * b + 2)
+      // In double precision, as when the binary tree's boxes were doubles.
+      val x = tree.boxes(6 * b + 3).toDouble - tree.boxes(6 * b)
+      val y = tree.boxes(6 * b + 4).toDouble - tree.boxes(6 * b + 1)
+      val z = tree.boxes(6 * b + 5).toDouble - tree.boxes(6 * b + 2)
       x * y + y * z + z * x
 
     /** Writes the binary nodes that become the children of the wide node made for `binary` into

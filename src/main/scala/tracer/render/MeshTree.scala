@@ -27,7 +27,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   private val vertices      = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
-  private val (planes, at) = MeshTree.leafOrder(mesh, faces)
+  private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size
@@ -227,22 +227,39 @@ private object MeshTree:
     * them reachable while the leaf-order arrays are made: 238 MB for the 1.3M-face mesh).
     */
   def wideTree(mesh: Mesh, pool: Option[ExecutionContext]): (WideTree, Array[Int]) =
-    val tree = BvhBuilder.faces(mesh).build(pool)
-    (WideTree.collapse(tree), tree.order)
+    val tree = BvhBuilder.faces(mesh, pool).build(pool)
+    (WideTree.collapse(tree, pool), tree.order)
 
   /** The planes (4 doubles a face, as [[tracer.geometry.Mesh.planes]] holds them) and corner
-    * offsets (3 ints) of `mesh`'s faces `order`.
+    * offsets (3 ints) of `mesh`'s faces `order`, on `pool` when one is given (in parts:
+    * [[BvhBuilder.inParts]]).
     */
-  def leafOrder(mesh: Mesh, order: Array[Int]): (Array[Double], Array[Int]) =
-    val planes   = new Array[Double](4 * order.length)
-    val at       = new Array[Int](3 * order.length)
+  def leafOrder(
+      mesh: Mesh,
+      order: Array[Int],
+      pool: Option[ExecutionContext]
+  ): (Array[Double], Array[Int]) =
+    val planes = new Array[Double](4 * order.length)
+    val at     = new Array[Int](3 * order.length)
+    BvhBuilder.inParts(order.length, pool)((from, to) => lay(mesh, order, planes, at, from, to))
+    (planes, at)
+
+  /** Writes the planes and corner offsets of leaf-order faces from until to. */
+  private def lay(
+      mesh: Mesh,
+      order: Array[Int],
+      planes: Array[Double],
+      at: Array[Int],
+      from: Int,
+      to: Int
+  ): Unit =
     val vertices = mesh.vertices
     val corners  = mesh.corners
     // Perf: one pass computing each face's plane from its corners (Mesh.plane: the mesh keeps no
     // copy of its own, docs/performance.md, round 7) and copying its corner offsets, in leaf
     // order, in a method of its own so that it is compiled apart from the constructor.
-    var k = 0
-    while k < order.length do
+    var k = from
+    while k < to do
       val f = order(k)
       Mesh.plane(vertices, corners, f) { (nx, ny, nz, d) =>
         planes(4 * k) = nx; planes(4 * k + 1) = ny; planes(4 * k + 2) = nz; planes(4 * k + 3) = d
@@ -250,4 +267,3 @@ private object MeshTree:
       at(3 * k) = 3 * corners(3 * f); at(3 * k + 1) = 3 * corners(3 * f + 1)
       at(3 * k + 2) = 3 * corners(3 * f + 2)
       k += 1
-    (planes, at)

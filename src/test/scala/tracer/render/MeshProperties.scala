@@ -184,6 +184,12 @@ class MeshProperties extends ScalaCheckSuite:
       assert(parallel.order.sameElements(serial.order))
       assert(parallel.links.sameElements(serial.links))
       assert(parallel.boxes.sameElements(serial.boxes))
+      val wide   = WideTree.collapse(parallel, Some(ExecutionContext.fromExecutorService(pool)))
+      val narrow = WideTree.collapse(serial)
+      assertEquals(wide.size, narrow.size)
+      assert(wide.boxes.sameElements(narrow.boxes))
+      assert(wide.child.sameElements(narrow.child))
+      assert(wide.count.sameElements(narrow.count))
     finally pool.shutdown()
 
   test("a world whose area lights test shapes by beam builds each mesh's tree once"):
