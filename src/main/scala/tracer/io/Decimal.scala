@@ -19,14 +19,29 @@ private[io] object Decimal:
 
   /** [[parse]] of the characters `text(from until to)`, without making a String of them. */
   def parse(text: CharSequence, from: Int, to: Int): Double =
+    scan(text.charAt(_), from, to)(text.subSequence(from, to).toString)
+
+  /** [[parse]] of the characters `chars(from until to)`: the same scan on an array (the OBJ
+    * reader's block of text), so the same value bit for bit (`DecimalProperties`).
+    */
+  def parse(chars: Array[Char], from: Int, to: Int): Double =
+    scan(chars(_), from, to)(String(chars, from, to - from))
+
+  /** The scan of [[parse]] over the characters `at(from until to)`; `slow` is them as a String,
+    * made only for `parseDouble` when the fast path does not apply. Inlined with `at`, so each
+    * caller gets its own loop over its own kind of text, from this one source.
+    */
+  private inline def scan(inline at: Int => Char, from: Int, to: Int)(
+      inline slow: => String
+  ): Double =
     // Perf: one scan that checks the grammar and gathers the digits; a value of at most 15
     // significant digits with a power of ten up to 22 is computed exactly as one correctly rounded
     // product or quotient of two exact doubles (Clinger's fast path), which is what parseDouble
     // gives; anything longer goes to parseDouble itself (docs/performance.md, round 4).
     // Mutable scan state, local to this loop.
     var i        = from
-    val negative = i < to && text.charAt(i) == '-'
-    if i < to && (text.charAt(i) == '-' || text.charAt(i) == '+') then i += 1
+    val negative = i < to && at(i) == '-'
+    if i < to && (at(i) == '-' || at(i) == '+') then i += 1
     var mantissa = 0L
     var digits   = 0     // significant digits gathered into mantissa
     var dropped  = false // a nonzero digit beyond what mantissa can hold exactly
@@ -35,7 +50,7 @@ private[io] object Decimal:
     var fraction = false
     var more     = true
     while more && i < to do
-      val c = text.charAt(i)
+      val c = at(i)
       if c >= '0' && c <= '9' then
         seen += 1
         if mantissa == 0 && c == '0' then
@@ -55,13 +70,13 @@ private[io] object Decimal:
       else more = false
     var exponent = 0
     var valid    = seen > 0
-    if valid && i < to && (text.charAt(i) == 'e' || text.charAt(i) == 'E') then
+    if valid && i < to && (at(i) == 'e' || at(i) == 'E') then
       i += 1
-      val minus = i < to && text.charAt(i) == '-'
-      if i < to && (text.charAt(i) == '-' || text.charAt(i) == '+') then i += 1
+      val minus = i < to && at(i) == '-'
+      if i < to && (at(i) == '-' || at(i) == '+') then i += 1
       val start = i
-      while i < to && text.charAt(i) >= '0' && text.charAt(i) <= '9' do
-        if exponent < 100000 then exponent = 10 * exponent + (text.charAt(i) - '0')
+      while i < to && at(i) >= '0' && at(i) <= '9' do
+        if exponent < 100000 then exponent = 10 * exponent + (at(i) - '0')
         i += 1
       valid = i > start
       if minus then exponent = -exponent
@@ -74,7 +89,7 @@ private[io] object Decimal:
         else if power >= 0 && power <= 22 then mantissa.toDouble * Powers(power)
         else if power < 0 && power >= -22 then mantissa.toDouble / Powers(-power)
         else Double.NaN
-      if exact.isNaN then java.lang.Double.parseDouble(text.subSequence(from, to).toString)
+      if exact.isNaN then java.lang.Double.parseDouble(slow)
       else if negative then -exact
       else exact
 

@@ -1,6 +1,6 @@
 package tracer.io
 
-import java.io.{BufferedReader, IOException}
+import java.io.{IOException, Reader}
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, NoSuchFileException, Path}
 import scala.collection.mutable
@@ -95,16 +95,20 @@ object ObjReader:
       case e: IOException         =>
         Left(s"$name: ${Option(e.getMessage).getOrElse(e.getClass.getSimpleName)}")
 
-  /** Reads OBJ text line by line; `name` names the file in errors. */
-  def parse(reader: BufferedReader, name: String): Either[String, ObjMesh] =
+  /** Reads OBJ text line by line (lines end as `BufferedReader.readLine` ends them); `name`
+    * names the file in errors.
+    */
+  def parse(reader: Reader, name: String): Either[String, ObjMesh] =
     ObjParser(reader, name).run()
 
 /** One pass over an OBJ file; its growing tables never leave it. */
-private final class ObjParser(reader: BufferedReader, name: String):
-  // Perf: each line scanned in place: its words found as index ranges (no substring per word),
-  // numbers read from the line's characters (Decimal.parse) and indices parsed by hand; the
-  // vertices and faces in growable arrays of unboxed numbers, no object per vertex or face
-  // (docs/performance.md, rounds 4 and 6).
+private final class ObjParser(reader: Reader, name: String):
+  // Perf: the text read in large blocks of characters (decoded by the reader, as readLine's
+  // are), each line scanned in place in the block: no String per line (a quarter of the 1.3M-face
+  // file's reading was decoding and copying its lines; docs/performance.md, round 8). Its words
+  // found as index ranges, numbers read from the characters (Decimal.parse) and indices parsed by
+  // hand; the vertices and faces in growable arrays of unboxed numbers, no object per vertex or
+  // face (rounds 4 and 6).
   private val vertices     = DoubleBuffer()
   private var vertexCount  = 0
   private val texture      = DoubleBuffer()
@@ -118,9 +122,17 @@ private final class ObjParser(reader: BufferedReader, name: String):
   private var anyNormed    = false
   private val skipped      = mutable.LinkedHashSet.empty[String]
   private var lineNumber   = 0
-  // Perf: the current line and its words: word k is line(starts(k) until ends(k)); the arrays
-  // are reused for every line and grown as needed, so a line allocates no list of words.
-  private var line   = ""
+  // Perf: the block of text: `text(pos until filled)` is read and not yet scanned; the current
+  // line is text(lineStart until lineEnd). A line longer than the block grows it.
+  private var text      = new Array[Char](ObjParser.Block)
+  private var filled    = 0
+  private var pos       = 0
+  private var atEnd     = false
+  private var skipLF    = false
+  private var lineStart = 0
+  private var lineEnd   = 0
+  // Perf: the current line's words: word k is text(starts(k) until ends(k)); the arrays are
+  // reused for every line and grown as needed, so a line allocates no list of words.
   private var count  = 0
   private var starts = new Array[Int](16)
   private var ends   = new Array[Int](16)
@@ -132,15 +144,11 @@ private final class ObjParser(reader: BufferedReader, name: String):
   /** Reads every line: the mesh, or the first error with its line. */
   def run(): Either[String, ObjMesh] =
     try
-      // Why: readLine's loop, the one way to read lines that keeps IOException as it is (lines()
-      // wraps it); null is its end of input.
-      var next = reader.readLine()
-      while next != null do // nosemgrep: no-null — BufferedReader.readLine's end of input
+      // Why: a loop over the lines, each scanned in place.
+      while nextLine() do
         lineNumber += 1
-        line = next
         split()
         statement()
-        next = reader.readLine()
       Right(
         ObjMesh(
           vertices.result(),
@@ -154,11 +162,59 @@ private final class ObjParser(reader: BufferedReader, name: String):
       )
     catch case ObjParser.Malformed(message) => Left(message)
 
-  private def word(k: Int): String = line.substring(starts(k), ends(k))
+  /** Finds the next line (without its end: `\n`, `\r` or `\r\n`, as `BufferedReader.readLine`
+    * ends lines) at text(lineStart until lineEnd); false at the end of the text.
+    */
+  private def nextLine(): Boolean =
+    if skipLF then
+      if pos == filled then refill(): Unit
+      if pos < filled && text(pos) == '\n' then pos += 1
+      skipLF = false
+    // Perf: a scan for the line's end in the block, refilled when it runs out.
+    var i    = pos
+    var open = true
+    while open do
+      while i < filled && text(i) != '\n' && text(i) != '\r' do i += 1
+      if i < filled || atEnd then open = false
+      else i -= refill()
+    if i == pos && i == filled then false
+    else
+      lineStart = pos
+      lineEnd = i
+      if i < filled then
+        skipLF = text(i) == '\r'
+        pos = i + 1
+      else pos = i
+      true
 
-  /** True when word k is exactly `text`. */
-  private def is(k: Int, text: String): Boolean =
-    ends(k) - starts(k) == text.length && line.startsWith(text, starts(k))
+  /** Moves the unscanned text to the block's start, grows the block when that is full, and reads
+    * more into it (or notes the end); returns how far the text moved.
+    */
+  private def refill(): Int =
+    val moved = pos
+    if moved > 0 then
+      System.arraycopy(text, pos, text, 0, filled - pos)
+      filled -= pos
+      pos = 0
+    if filled == text.length then text = java.util.Arrays.copyOf(text, 2 * text.length)
+    val n = reader.read(text, filled, text.length - filled)
+    if n < 0 then atEnd = true else filled += n
+    moved
+
+  private def string(from: Int, to: Int): String = String(text, from, to - from)
+
+  private def word(k: Int): String = string(starts(k), ends(k))
+
+  /** True when word k is exactly `name`. */
+  private def is(k: Int, name: String): Boolean =
+    val from = starts(k)
+    // Why: a comparison of the few characters in place.
+    var same = ends(k) - from == name.length
+    var i    = 0
+    while same && i < name.length do
+      same = text(from + i) == name.charAt(i)
+      i += 1
+    same
 
   private def statement(): Unit =
     if count > 0 then
@@ -194,7 +250,7 @@ private final class ObjParser(reader: BufferedReader, name: String):
       k += 1
     fan(corners)
 
-  /** Corner k of a face, written at line(from until to) as v, v/vt, v//vn or v/vt/vn. */
+  /** Corner k of a face, written at text(from until to) as v, v/vt, v//vn or v/vt/vn. */
   private def corner(k: Int, from: Int, to: Int): Unit =
     // Perf: one scan for the slashes in place, instead of a split into substrings per corner.
     var slash1  = to
@@ -202,12 +258,11 @@ private final class ObjParser(reader: BufferedReader, name: String):
     var slashes = 0
     var i       = from
     while i < to do
-      if line.charAt(i) == '/' then
+      if text(i) == '/' then
         slashes += 1
         if slashes == 1 then slash1 = i else if slashes == 2 then slash2 = i
       i += 1
-    if slashes > 2 || slash1 == from then
-      fail(s"malformed face vertex '${line.substring(from, to)}'")
+    if slashes > 2 || slash1 == from then fail(s"malformed face vertex '${string(from, to)}'")
     cornerV(k) = index(from, slash1, vertexCount, "vertex")
     cornerT(k) =
       if slash1 + 1 < slash2 then index(slash1 + 1, slash2, textureCount, "texture coordinate")
@@ -248,20 +303,20 @@ private final class ObjParser(reader: BufferedReader, name: String):
           faceN += -1; faceN += -1; faceN += -1
       k += 1
 
-  /** The 1-based or negative OBJ index at line(from until to), as a 0-based index below `defined`. */
+  /** The 1-based or negative OBJ index at text(from until to), as a 0-based index below `defined`. */
   private def index(from: Int, to: Int, defined: Int, what: String): Int =
     // Perf: parsed by hand ([+-]?digits, as toIntOption accepts), without a substring.
     var i        = from
-    val negative = i < to && line.charAt(i) == '-'
-    if i < to && (line.charAt(i) == '-' || line.charAt(i) == '+') then i += 1
+    val negative = i < to && text(i) == '-'
+    if i < to && (text(i) == '-' || text(i) == '+') then i += 1
     var value = 0L
     val first = i
-    while i < to && line.charAt(i) >= '0' && line.charAt(i) <= '9' && value <= Int.MaxValue do
-      value = 10 * value + (line.charAt(i) - '0')
+    while i < to && text(i) >= '0' && text(i) <= '9' && value <= Int.MaxValue do
+      value = 10 * value + (text(i) - '0')
       i += 1
     val signed = if negative then -value else value
     if i == first || i != to || signed > Int.MaxValue || signed < Int.MinValue then
-      fail(s"malformed $what index '${line.substring(from, to)}'")
+      fail(s"malformed $what index '${string(from, to)}'")
     val n        = signed.toInt
     val resolved = if n > 0 then n - 1 else if n < 0 then defined + n else -1
     if resolved < 0 || resolved >= defined then
@@ -270,22 +325,23 @@ private final class ObjParser(reader: BufferedReader, name: String):
 
   /** Word k as a finite decimal number (Decimal's grammar: no NaN, no hex). */
   private def number(k: Int): Double =
-    val value = Decimal.parse(line, starts(k), ends(k))
+    val value = Decimal.parse(text, starts(k), ends(k))
     if value.isNaN || value.isInfinite then fail(s"malformed number '${word(k)}'")
     value
 
-  /** Finds the line's words, split at spaces and tabs; a trailing comment is dropped. */
+  /** Finds the line's words, split at whitespace (`Character.isWhitespace`); a trailing comment
+    * is dropped.
+    */
   private def split(): Unit =
-    val end = line.indexOf('#') match
-      case -1 => line.length
-      case i  => i
+    // Perf: the words found as index ranges in place, with no substring or array per word; one
+    // scan that stops at the comment (a '#' ends the words as the end of the line does).
+    val end = lineEnd
     count = 0
-    // Perf: the words found as index ranges in place, with no substring or array per word.
-    var i = 0
-    while i < end do
-      while i < end && Character.isWhitespace(line.charAt(i)) do i += 1
+    var i = lineStart
+    while i < end && text(i) != '#' do
+      while i < end && text(i) != '#' && ObjParser.space(text(i)) do i += 1
       val start = i
-      while i < end && !Character.isWhitespace(line.charAt(i)) do i += 1
+      while i < end && text(i) != '#' && !ObjParser.space(text(i)) do i += 1
       if i > start then
         if count == starts.length then
           starts = java.util.Arrays.copyOf(starts, 2 * count)
@@ -340,5 +396,12 @@ private final class IntBuffer:
   def result(): IArray[Int] = IArray.unsafeFromArray(java.util.Arrays.copyOf(data, size))
 
 private object ObjParser:
+  /** The characters read at a time (the block grows for a longer line). */
+  val Block = 1 << 16
+
+  /** `Character.isWhitespace(c)`, without its table look-up for the printable ASCII characters. */
+  def space(c: Char): Boolean = c <= ' ' && (c == ' ' || Character.isWhitespace(c)) ||
+    c >= '\u007f' && Character.isWhitespace(c)
+
   /** The parser's internal signal; it never escapes [[ObjParser.run]]. */
   final case class Malformed(message: String) extends Exception(message) with NoStackTrace

@@ -119,3 +119,67 @@ class ObjReaderSuite extends munit.FunSuite:
       ObjReader.read(java.nio.file.Path.of("/no/such/model.obj"), "model.obj"),
       Left("model.obj: no such file")
     )
+
+  /** A reader that hands out at most a few characters a call (`sizes` in turn), so that lines and
+    * their `\r\n` ends fall across the parser's reads.
+    */
+  private final class Trickle(text: String, sizes: Seq[Int]) extends java.io.Reader:
+    // Why: a Reader's position, advanced by each read.
+    private var at   = 0
+    private var turn = 0
+
+    def read(into: Array[Char], offset: Int, length: Int): Int =
+      if at == text.length then -1
+      else
+        val n = Math.min(Math.min(length, sizes(turn % sizes.length)), text.length - at)
+        turn += 1
+        text.getChars(at, at + n, into, offset)
+        at += n
+        n
+    def close(): Unit = ()
+
+  private val lines = Vector(
+    "# a comment",
+    "v 0 0 0",
+    "v 1 0 0 # a corner",
+    "",
+    "v 0 1 0",
+    "\tvt 0.5  0.25 ",
+    "vn 0 0 1",
+    "g side\u00a0one",
+    "o \u00e9t\u00e9",
+    "f 1/1/1 2/1/1 3/1/1",
+    "f -3 -2 -1",
+    "usemtl x"
+  )
+
+  test("lines end at \\n, \\r or \\r\\n, as readLine ends them, wherever the reads end"):
+    val reference = mesh(lines.mkString("\n"))
+    val endings   = Vector("\n", "\r", "\r\n")
+    for seed <- 0 until 50 do
+      val random = scala.util.Random(seed)
+      val text   = lines.map(_ + endings(random.nextInt(3))).mkString.dropRight(random.nextInt(2))
+      val sizes  = Seq.fill(5)(1 + random.nextInt(7))
+      ObjReader.parse(Trickle(text, sizes), "m.obj") match
+        case Left(message) => fail(s"$message in ${text.replace("\r", "\\r")}")
+        case Right(m)      =>
+          assertEquals(m.triangles, reference.triangles, text)
+          assertEquals(m.skippedKinds, reference.skippedKinds)
+
+  test("an error names its line however the lines end"):
+    assertError("v 0 0 0\r\nv 1 0 0\r\rv 1\r\n", "m.obj line 4", "x, y and z")
+    assertError("v 0 0 0\rv 1 0 0\r\nf 1 2 3\n", "m.obj line 3", "vertex index 3 is out of range")
+
+  test("Unicode whitespace separates words, as Character.isWhitespace says"):
+    val m = mesh("v\u20030 0 0\nv 1\u2028 0 0\nv 0 1 0\nf 1 2 3\u3000\n")
+    assertEquals(m.triangles.map(_.b), Vector(p1))
+    assertError("v 0 0 0\u00a0\n", "malformed number") // a no-break space is not whitespace
+
+  test("a line longer than the parser's block, and a file of many blocks"):
+    val polygon = (1 to 20000).mkString("f ", " ", "\n")
+    val ring    = (0 until 20000)
+      .map(k => s"v ${Math.cos(k * 0.001)} ${Math.sin(k * 0.001)} 0.125\n")
+      .mkString
+    val m = mesh(ring + "# " + "x" * 100000 + "\n" + polygon)
+    assertEquals(m.faceCount, 19998)
+    assertEquals(m.vertex(19999), Vec3(Math.cos(19999 * 0.001), Math.sin(19999 * 0.001), 0.125))
