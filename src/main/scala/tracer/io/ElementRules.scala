@@ -110,8 +110,31 @@ private[io] object ElementRules:
       case Some("false") => Right(false)
       case Some(other)   => e.fail(s"attribute $key must be true or false, got '$other'")
 
-  /** A vector element: attributes x, y and z. */
+  /** A vector element: attributes x, y and z.
+    *
+    * Perf: the usual element (exactly x, y and z, each a finite number; no children, no text) is
+    * read directly; anything else goes through [[vectorChecked]], which gives the same vector or
+    * the error. Scenes of many triangles read three corners an element, and the checked path's
+    * `Either` chain ran cold for most of them (`ElementRulesProperties` holds the two equal;
+    * docs/performance.md, round 8).
+    */
   def vector(e: Element): Result[Vec3] =
+    val a = e.attributes
+    if a.size == 3 && e.children.isEmpty && e.strayText.isEmpty then
+      val x = direct(a, "x")
+      val y = direct(a, "y")
+      val z = direct(a, "z")
+      if x.isFinite && y.isFinite && z.isFinite then Right(Vec3(x, y, z)) else vectorChecked(e)
+    else vectorChecked(e)
+
+  /** Attribute `key` of `a` read as [[number]] reads it, NaN when absent or not a number. */
+  private def direct(a: Map[String, String], key: String): Double =
+    a.get(key) match
+      case Some(raw) => Decimal.parse(raw.trim)
+      case None      => Double.NaN
+
+  /** [[vector]] by the general rules, each failing with its own error. */
+  def vectorChecked(e: Element): Result[Vec3] =
     for
       _ <- contents(e, Vocabulary.VectorAttributes, Vocabulary.NoNames)
       x <- requiredNumber(e, "x")
@@ -147,8 +170,28 @@ private[io] object ElementRules:
         )
     }
 
-  /** A colour element with channels from 0 to `max`. */
+  /** A colour element with channels from 0 to `max`.
+    *
+    * Perf: as [[vector]], the usual element (exactly r, g and b, each within range) is read
+    * directly, anything else through [[colourChecked]].
+    */
   def colour(e: Element, max: Double): Result[Colour] =
+    val a = e.attributes
+    if a.size == 3 && e.children.isEmpty && e.strayText.isEmpty then
+      val r = direct(a, "r")
+      val g = direct(a, "g")
+      val b = direct(a, "b")
+      if inRange(r, max) && inRange(g, max) && inRange(b, max) then Right(Colour(r, g, b))
+      else colourChecked(e, max)
+    else colourChecked(e, max)
+
+  /** A channel that [[colourChecked]] accepts: finite (so not NaN, which an absent or malformed
+    * attribute gives), from 0 to `max`.
+    */
+  private def inRange(c: Double, max: Double): Boolean = c.isFinite && c >= 0 && c <= max
+
+  /** [[colour]] by the general rules, each failing with its own error. */
+  def colourChecked(e: Element, max: Double): Result[Colour] =
     for
       _        <- contents(e, Vocabulary.ColourAttributes, Vocabulary.NoNames)
       channels <- traverse(List("r", "g", "b")) { key =>

@@ -104,8 +104,32 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
       piece <- finish(e, children, at, plane, texturable = false, solid = false)
     yield piece
 
-  /** A `<triangle>`, by three corners or by an origin and two legs. */
+  /** A `<triangle>`, by three corners or by an origin and two legs.
+    *
+    * Perf: the usual element (no attributes or text, three `<corner>`s first, then at most a
+    * `<surface>`) reads its corners straight away; anything else goes through
+    * [[triangleChecked]], which gives the same piece or the same error (the usual element passes
+    * its every check). The 5 MB `<triangle>` scene reads 20,000 of them, mostly cold
+    * (`ElementRulesProperties`; docs/performance.md, round 8).
+    */
   def triangle(e: Element, at: Enclosure): Result[Piece] =
+    e.children match
+      case c0 :: c1 :: c2 :: rest
+          if e.attributes.isEmpty && e.strayText.isEmpty && isCorner(c0) && isCorner(c1) &&
+            isCorner(c2) && (rest.isEmpty || (rest.tail.isEmpty && rest.head.name == "surface")) =>
+        for
+          t0 <- vector(c0)
+          t1 <- vector(c1)
+          t2 <- vector(c2)
+          _  <- check(Triangle.isProper(t0, t1, t2), e, s"the corners $t0, $t1, $t2 are collinear")
+          piece <- finish(e, e.children, at, Triangle(t0, t1, t2), texturable = true, solid = false)
+        yield piece
+      case _ => triangleChecked(e, at)
+
+  private def isCorner(c: Element): Boolean = c.name == "corner"
+
+  /** [[triangle]] by the general rules, each failing with its own error. */
+  def triangleChecked(e: Element, at: Enclosure): Result[Piece] =
     for
       children     <- contents(e, Vocabulary.NoNames, Vocabulary.TriangleChildren)
       corners      <- traverse(children.filter(_.name == "corner"))(vector)
@@ -234,11 +258,18 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
 
   /** A version 3 element's placement: `scale`, then `<rotate>`, then `<translate>`. */
   def placement(e: Element, children: List[Element]): Result[Placement] =
-    for
-      scale     <- positive(e, "scale", 1.0)
-      rotate    <- optionalVector(e, children, Vec3.Zero, "rotate")
-      translate <- optionalVector(e, children, Vec3.Zero, "translate")
-    yield Placement(scale, rotate, translate)
+    // Perf: with none of the three given, the identity as it is, rather than a new one (three
+    // matrix products) for every element; the same value and the same transform.
+    if e.attributes.get("scale").isEmpty && !children.exists(c =>
+        c.name == "rotate" || c.name == "translate"
+      )
+    then Right(Placement.Identity)
+    else
+      for
+        scale     <- positive(e, "scale", 1.0)
+        rotate    <- optionalVector(e, children, Vec3.Zero, "rotate")
+        translate <- optionalVector(e, children, Vec3.Zero, "translate")
+      yield Placement(scale, rotate, translate)
 
   /** Why `ior` is refused on element `e` at `at`, or `None` where it is allowed: on spheres,
     * closed solids and CSG elements at the top of the scene.
