@@ -26,6 +26,147 @@ private[render] object WideWalk:
       if iz >= 0 then 0 else 3
     )
 
+  /** The ordered nearest-hit walk of a wide tree (boxes `wb`, children `wc`, counts `wn`; `empty`
+    * for a tree of no nodes) for the ray from (ox, oy, oz) with inverse direction (ix, iy, iz)
+    * and near corners (sx, sy, sz) (see [[walk]]), on the scratch `stack` and `entries`: every
+    * leaf entered at a distance ≤ the best so far (from `limit` on) has each of its primitives k
+    * passed to `leaf(k, best)`, which returns the new best distance. Returns the last best.
+    *
+    * Perf: shared by [[Bvh.nearest]] and [[MeshTree.nearest]], which differ only in the leaf:
+    * `inline` with an inline leaf, so each is compiled as if written out in place (the same
+    * bytecode as the two copies it replaced; docs/performance.md, round 8).
+    */
+  inline def nearest(
+      wb: Array[Float],
+      wc: Array[Int],
+      wn: Array[Int],
+      empty: Boolean,
+      stack: Array[Int],
+      entries: Array[Double],
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double
+  )(inline leaf: (Int, Double) => Double): Double =
+    // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
+    // pushed farthest first with their entry distances, so the nearest is walked next and a
+    // popped slot beyond the best hit is dropped untested (docs/performance.md, round 5).
+    // Why: the best distance so far, narrowed by the leaves.
+    var bestT = limit
+    // Why: the stack's size, moved by the pops and pushes below.
+    var sp =
+      if empty then 0
+      else push(wb, wn, 0, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, bestT, true)
+    // Perf: the walk's loop on the scratch stack: no recursion, no allocation.
+    while sp > 0 do
+      sp -= 1
+      val slot = stack(sp)
+      // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
+      if entries(sp) <= bestT then
+        val count = wn(slot)
+        if count > 0 then
+          // Why: the leaf's primitives, one by one.
+          var k   = wc(slot)
+          val end = k + count
+          // Perf: a plain loop over the leaf's range.
+          while k < end do
+            bestT = leaf(k, bestT)
+            k += 1
+        else
+          sp = push(
+            wb,
+            wn,
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            true
+          )
+    bestT
+
+  /** The any-hit walk of a wide tree's node `root` and the nodes below it (as [[nearest]]'s
+    * arguments, `limit` the ray's end; `root` 0 for the whole tree): true as soon as `leaf(slot, k)` says primitive k of the leaf at `slot` that the ray enters blocks
+    * it.
+    *
+    * Perf: shared by [[Bvh.occluded]] and [[MeshTree.occluded]], as [[nearest]]; unordered (any
+    * hit will do) with an early exit.
+    */
+  inline def any(
+      wb: Array[Float],
+      wc: Array[Int],
+      wn: Array[Int],
+      empty: Boolean,
+      root: Int,
+      stack: Array[Int],
+      entries: Array[Double],
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      sx: Int,
+      sy: Int,
+      sz: Int,
+      limit: Double
+  )(inline leaf: (Int, Int) => Boolean): Boolean =
+    // Why: set by the first leaf primitive that blocks the ray, which ends the walk.
+    var hit = false
+    // Why: the stack's size, moved by the pops and pushes below.
+    var sp =
+      if empty then 0
+      else push(wb, wn, root, 0, stack, entries, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit, false)
+    // Perf: the walk's loop on the scratch stack, stopping at the first blocker.
+    while sp > 0 && !hit do
+      sp -= 1
+      val slot  = stack(sp)
+      val count = wn(slot)
+      if count > 0 then
+        // Why: the leaf's primitives, one by one.
+        var k   = wc(slot)
+        val end = k + count
+        // Perf: a plain loop over the leaf's range, stopping at the first blocker.
+        while k < end && !hit do
+          hit = leaf(slot, k)
+          k += 1
+      else
+        sp = push(
+          wb,
+          wn,
+          wc(slot),
+          sp,
+          stack,
+          entries,
+          ox,
+          oy,
+          oz,
+          ix,
+          iy,
+          iz,
+          sx,
+          sy,
+          sz,
+          limit,
+          false
+        )
+    hit
+
   /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
     * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
     * farthest first, so the nearest is popped next. Returns the new stack size.
