@@ -59,44 +59,79 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
       limitIndex: Int,
       query: Query
   ): Int =
-    // Perf: WideWalk.nearest's ordered walk of the 4-wide tree; leaves test the double-precision
-    // primitives (docs/performance.md, round 5; WorldBench).
-    var best = limitIndex
+    // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
+    // pushed farthest first with their entry distances, so the nearest is walked next and a popped
+    // slot beyond the best hit is dropped untested; leaves test the double-precision primitives
+    // (docs/performance.md, round 5; WorldBench).
+    val stack   = query.nodes
+    val entries = query.entries
+    var best    = limitIndex
+    var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
-    var face     = -1
-    val stack    = query.nodes
-    val entries  = query.entries
-    val nearestT = WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      WideWalk.nearest(
-        wb,
-        wc,
-        wn,
-        wide.size == 0,
-        stack,
-        entries,
-        ox,
-        oy,
-        oz,
-        ix,
-        iy,
-        iz,
-        sx,
-        sy,
-        sz,
-        limit
-      ) { (k, bestT) =>
-        val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
-        if t <= bestT && t < Double.PositiveInfinity then
-          val i = prims.index(k)
-          if t < bestT || i < best then
-            best = i
-            face = query.meshFace
-            t
-          else bestT
-        else bestT
-      }
+    var face = -1
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            ordered = true
+          )
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
+        if entries(sp) <= bestT then
+          val count = wn(slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val i = prims.index(k)
+                if t < bestT || i < best then
+                  bestT = t
+                  best = i
+                  face = query.meshFace
+              k += 1
+          else
+            sp = WideWalk.push(
+              wb,
+              wn,
+              wc(slot),
+              sp,
+              stack,
+              entries,
+              ox,
+              oy,
+              oz,
+              ix,
+              iy,
+              iz,
+              sx,
+              sy,
+              sz,
+              bestT,
+              ordered = true
+            )
     }
-    query.distance = nearestT
+    query.distance = bestT
     query.face = face
     best
 
@@ -113,47 +148,65 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
       limit: Double,
       query: Query
   ): Boolean =
-    // Perf: any hit will do (shadow rays): first the shape that blocked the last ray, when it was
-    // blocked (a shadow ray's neighbours are mostly blocked by the same shape, or near the same
-    // leaf of a mesh), then WideWalk.any, unordered, with an early exit, which keeps the blocker
-    // it finds for the next ray, or none (docs/performance.md, round 8). Either answers whether
-    // some shape blocks the ray, so the answer is the walk's.
-    val hint = query.blocker
-    if hint >= 0 && hint < prims.size &&
-      Primitives.blocksAt(prims, hint, query.blockerLeaf, limit, ox, oy, oz, dx, dy, dz, query)
-    then true
-    else
-      val stack   = query.nodes
-      val entries = query.entries
-      WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-        WideWalk.any(
-          wb,
-          wc,
-          wn,
-          wide.size == 0,
-          0,
-          stack,
-          entries,
-          ox,
-          oy,
-          oz,
-          ix,
-          iy,
-          iz,
-          sx,
-          sy,
-          sz,
-          limit
-        ) { (_, k) =>
-          val blocks = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
-          if blocks then query.blocker = k
-          blocks
-        }
-      } || {
-        // No blocker: the next ray starts with none (a lit ray's neighbour is mostly lit too).
-        query.blocker = -1
-        false
-      }
+    // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
+    val stack   = query.nodes
+    val entries = query.entries
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var hit = false
+      var sp  =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = wn(slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+            k += 1
+        else
+          sp = WideWalk.push(
+            wb,
+            wn,
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            ordered = false
+          )
+      hit
+    }
 
   /** [[nearest]] on the binary tree the wide one was collapsed from: the same answers, kept to
     * measure what the wide tree gains (`WorldBench`).
@@ -332,18 +385,6 @@ final class Query:
     */
   private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
   private[render] val meshEntries = new Array[Double](Bvh.StackSize)
-
-  /** The primitive, in the scene tree's leaf order, that blocked the last shadow ray walked with
-    * these queries (−1 when that ray was not blocked): [[Bvh.occluded]] tries it first. Any
-    * value is safe: it is only ever a guess, tested like any other primitive.
-    */
-  // Why: written by the walk that finds a blocker, read by the next shadow ray (Shadows keeps one
-  // per light); a field of the scratch space, as meshFace.
-  private[render] var blocker: Int = -1
-
-  /** When [[blocker]] is a mesh, the slot of its tree's leaf that blocked the ray. */
-  // Why: as blocker, written by MeshTree.occluded.
-  private[render] var blockerLeaf: Int = -1
 
   /** The face the last mesh test met first ([[MeshTree.nearest]]). */
   // Why: the second result of a mesh's test, written instead of allocating a pair per test.

@@ -47,42 +47,74 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       limit: Double,
       query: Query
   ): Double =
-    // Perf: WideWalk.nearest's ordered walk, as Bvh.nearest's, on the query's second stack (the
-    // scene's walk is still under way on the first), face tests on the leaf-order arrays.
-    var best     = Int.MaxValue
-    val stack    = query.meshNodes
-    val entries  = query.meshEntries
-    val nearestT = WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      WideWalk.nearest(
-        wb,
-        wc,
-        wn,
-        wide.size == 0,
-        stack,
-        entries,
-        ox,
-        oy,
-        oz,
-        ix,
-        iy,
-        iz,
-        sx,
-        sy,
-        sz,
-        limit
-      ) { (k, bestT) =>
-        val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
-        if t <= bestT && t < Double.PositiveInfinity then
-          val f = faces(k)
-          if t < bestT || f < best then
-            best = f
-            t
-          else bestT
-        else bestT
-      }
+    // Perf: Bvh.nearest's ordered walk of a 4-wide tree on the query's second stack (the scene's
+    // walk is still under way on the first), face tests on the leaf-order arrays.
+    val stack   = query.meshNodes
+    val entries = query.meshEntries
+    var best    = Int.MaxValue
+    var bestT   = limit
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bestT,
+            true
+          )
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        if entries(sp) <= bestT then
+          val count = wn(slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val f = faces(k)
+                if t < bestT || f < best then
+                  bestT = t
+                  best = f
+              k += 1
+          else
+            sp = WideWalk.push(
+              wb,
+              wn,
+              wc(slot),
+              sp,
+              stack,
+              entries,
+              ox,
+              oy,
+              oz,
+              ix,
+              iy,
+              iz,
+              sx,
+              sy,
+              sz,
+              bestT,
+              true
+            )
     }
     query.meshFace = best
-    if best == Int.MaxValue then Double.PositiveInfinity else nearestT
+    if best == Int.MaxValue then Double.PositiveInfinity else bestT
 
   /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
     * first.
@@ -97,79 +129,64 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       limit: Double,
       query: Query
   ): Boolean =
-    // Perf: WideWalk.any, as Bvh.occluded's, unordered, with an early exit.
+    // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
     val stack   = query.meshNodes
     val entries = query.meshEntries
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      WideWalk.any(
-        wb,
-        wc,
-        wn,
-        wide.size == 0,
-        0,
-        stack,
-        entries,
-        ox,
-        oy,
-        oz,
-        ix,
-        iy,
-        iz,
-        sx,
-        sy,
-        sz,
-        limit
-      ) { (slot, k) =>
-        val blocks = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
-        if blocks then query.blockerLeaf = slot
-        blocks
-      }
-    }
-
-  /** True when some face below the wide node that holds the leaf at `slot` (any Int: false when
-    * there is no such leaf) is met by the ray at a t below `limit`: a shadow ray's guess at its
-    * blocker, near the leaf that blocked the last one ([[Bvh.occluded]]).
-    */
-  def blocksNear(
-      slot: Int,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      query: Query
-  ): Boolean =
-    // Perf: WideWalk.any from that node: a few boxes and leaves, where a coherent ray's blocker
-    // mostly is.
-    val stack   = query.meshNodes
-    val entries = query.meshEntries
-    slot >= 0 && slot < wn.length && wn(slot) > 0 &&
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      WideWalk.any(
-        wb,
-        wc,
-        wn,
-        false,
-        slot / WideTree.Width,
-        stack,
-        entries,
-        ox,
-        oy,
-        oz,
-        ix,
-        iy,
-        iz,
-        sx,
-        sy,
-        sz,
-        limit
-      ) { (at, k) =>
-        val blocks = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
-        if blocks then query.blockerLeaf = at
-        blocks
-      }
+      var hit = false
+      var sp  =
+        if wide.size == 0 then 0
+        else
+          WideWalk.push(
+            wb,
+            wn,
+            0,
+            0,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            false
+          )
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = wn(slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
+            k += 1
+        else
+          sp = WideWalk.push(
+            wb,
+            wn,
+            wc(slot),
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            limit,
+            false
+          )
+      hit
     }
 
   /** The distance to leaf-order face k ([[tracer.geometry.Mesh.faceDistance]]). */

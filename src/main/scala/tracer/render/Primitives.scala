@@ -182,31 +182,6 @@ object Primitives:
       p.meshes(p.data(Stride * k).toInt).occluded(ox, oy, oz, dx, dy, dz, limit, query)
     else distance(p, k, limit, ox, oy, oz, dx, dy, dz, query) < limit
 
-  /** True when primitive `k` of a sphere, a triangle or a mesh (below the node of the leaf at `leaf`
-    * of its tree, see [[MeshTree.blocksNear]]) is met by the ray at a t below `limit`; false for the other kinds,
-    * which are not tried: a shadow ray's guess at its blocker ([[Bvh.occluded]]), so a wrong
-    * guess costs one cheap test (a solid's or combination's test could cost more than the walk).
-    */
-  inline def blocksAt(
-      p: Primitives,
-      k: Int,
-      leaf: Int,
-      limit: Double,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      query: Query
-  ): Boolean =
-    val kd = p.kind(k)
-    if kd == TriangleKind then triangle(p.data, Stride * k, limit, ox, oy, oz, dx, dy, dz) < limit
-    else if kd == SphereKind then sphere(p.data, Stride * k, ox, oy, oz, dx, dy, dz) < limit
-    else if kd == MeshKind then
-      p.meshes(p.data(Stride * k).toInt).blocksNear(leaf, ox, oy, oz, dx, dy, dz, limit, query)
-    else false
-
   /** The general route: [[tracer.geometry.Shape.distance]], bit for bit, from the solids' kernel
     * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test; a shape
     * farther than `cutoff` may be reported as a miss.

@@ -36,35 +36,6 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   private val low    = new Array[Double](7)
   private val high   = new Array[Double](7)
 
-  // Perf: each point light's last blocker (the query's blocker and blockerLeaf, see
-  // Bvh.occluded) at each of four depths, so that a light's shadow rays try the shape that
-  // blocked its last one from the same depth (a mirror's reflected points shoot theirs between
-  // two of a row's primary points), not the other light's (docs/performance.md, round 8).
-  private val hints = Array.fill(2 * Shadows.Depths * world.lights.length)(-1)
-
-  /** [[pointAlong]] toward the world's light `light`, a point light, from a point shaded with
-    * `depth` reflections left, trying the shape that blocked the last such shadow ray first: the
-    * same share.
-    */
-  def pointToward(
-      light: Int,
-      depth: Int,
-      fx: Double,
-      fy: Double,
-      fz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      reach: Double
-  ): Double =
-    val at = 2 * (Shadows.Depths * light + (depth & (Shadows.Depths - 1)))
-    query.blocker = hints(at)
-    query.blockerLeaf = hints(at + 1)
-    val share = pointAlong(fx, fy, fz, dx, dy, dz, reach)
-    hints(at) = query.blocker
-    hints(at + 1) = query.blockerLeaf
-    share
-
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
     */
@@ -448,10 +419,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     if !world.hasLeafSurfaces(i) then 0
     else Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
 
-/** The constants of [[Shadows]]: its beams' margin, its shadow rays' blockers kept. */
+/** The margin of [[Shadows]]' beams. */
 object Shadows:
   /** A beam's margin, as a share of the size of the coordinates compared. */
   val Margin: Double = 1e-7
-
-  /** The depths whose shadow rays keep blockers of their own (a power of two: depth mod it). */
-  val Depths: Int = 4

@@ -173,19 +173,6 @@ class BvhProperties extends ScalaCheckSuite:
       }
     }
 
-  property("occluded: the same answer whatever shape it is told to try first (Query.blocker)"):
-    val guess = Gen.oneOf(Gen.choose(-3, 60), Gen.choose(Int.MinValue, Int.MaxValue))
-    forAll(world, Gen.listOfN(30, Gen.zip(ray, guess, guess)), Gen.choose(0.5, 30.0)) {
-      (w, rays, limit) =>
-        val (told, fresh) = (w.newQuery(), w.newQuery())
-        rays.foreach { case (r, blocker, leaf) =>
-          told.blocker = blocker
-          told.blockerLeaf = leaf
-          fresh.blocker = -1
-          assertEquals(w.occluded(r, limit, told), w.occluded(r, limit, fresh), s"$r $blocker")
-        }
-    }
-
   test("a triangle lying in a plane: the first in document order wins, as without the hierarchy"):
     val floor = Plane.at(Vec3.UnitY, 0)
     val tile  = Triangle(Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(-1, 0, 1))

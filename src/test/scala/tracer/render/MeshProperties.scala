@@ -130,19 +130,6 @@ class MeshProperties extends ScalaCheckSuite:
       }
     }
 
-  property("occluded: the same answer whatever leaf of the mesh it is told to try first"):
-    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 20.0), Gen.choose(-2, 400)) {
-      case ((m, rs), limit, leaf) =>
-        val meshWorld     = World(scene(Vector(SceneObject(m))))
-        val (told, fresh) = (meshWorld.newQuery(), meshWorld.newQuery())
-        rs.foreach { r =>
-          told.blocker = 0
-          told.blockerLeaf = leaf
-          fresh.blocker = -1
-          assertEquals(meshWorld.occluded(r, limit, told), meshWorld.occluded(r, limit, fresh))
-        }
-    }
-
   property("the reference and the kernel's brute force agree with the faces, bit for bit"):
     forAll(mesh.flatMap(m => rays(m).map((m, _)))) { (m, rs) =>
       val buffer = tracer.geometry.CrossingBuffer()
