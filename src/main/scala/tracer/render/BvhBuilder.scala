@@ -263,7 +263,7 @@ private[render] final class BvhBuilder private (
           bestCost = cost
           best = step - 1
         step -= 1
-      if n <= MaxLeaf && bestCost >= n * area(boxes, nb, nb + 3) then leaf()
+      if n <= MaxLeaf && bestCost >= n * area(boxes, 6 * node, 6 * node + 3) then leaf()
       else
         // Partition in place: bins 0..best to the left.
         var i = start
