@@ -4,7 +4,9 @@ import java.awt.image.{BufferedImage, DataBuffer}
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, OutputStream}
 import javax.imageio.ImageIO
 
-/** Reads PNG images through the JDK's image I/O, and writes them with [[PngWriter]]. */
+/** Reads PNG images with [[PngReader]] (the JDK's image I/O for the rest), and writes them with
+  * [[PngWriter]].
+  */
 object Png:
 
   /** Writes `bitmap` as an 8-bit RGB PNG (deeper bitmaps are scaled to 8 bits). */
@@ -18,7 +20,23 @@ object Png:
 
   /** Decodes a PNG: 16-bit images keep their depth (maxval 65535), others become 8-bit RGB;
     * alpha is ignored.
+    *
+    * Perf: the common kinds of file through [[PngReader]], the rest (and every damaged file, for
+    * its message) through the JDK's image I/O, which decodes them to the same samples.
     */
+  def read(bytes: Array[Byte]): Either[String, Bitmap] =
+    PngReader.read(bytes).toRight(()).left.flatMap(_ => ViaImageIo.read(bytes))
+
+  /** Decodes a PNG through the JDK's image I/O alone, as [[read]] did before [[PngReader]]: the
+    * reference `PngReaderProperties` holds the decoder to.
+    */
+  private[image] def readWithImageIo(bytes: Array[Byte]): Either[String, Bitmap] =
+    ViaImageIo.read(bytes)
+
+/** The JDK's image I/O, in an object of its own so that its classes load only when it is used. */
+private object ViaImageIo:
+
+  /** Decodes a PNG with image I/O (see [[Png.read]]). */
   def read(bytes: Array[Byte]): Either[String, Bitmap] =
     val decoded =
       try Option(ImageIO.read(ByteArrayInputStream(bytes))).toRight("not a readable PNG image")
