@@ -161,7 +161,20 @@ private[image] object PngReader:
           filled += n
           // The stream's end, a preset dictionary, or no progress with input left.
           if n == 0 && !inflater.needsInput then stuck = true
-      Option.when(filled == out.length)(out)
+      // The rows are whole: the stream must end right after them, its checksum verified (a
+      // damaged tail, or data beyond the rows, is image I/O's to judge).
+      val probe = new Array[Byte](1)
+      // Why: feeding the rest of the IDAT chunks until the inflater reaches the stream's end.
+      while filled == out.length && !stuck && !inflater.finished do
+        if inflater.needsInput then
+          if next < idats.length then
+            val (from, length) = idats(next)
+            inflater.setInput(bytes, from, length)
+            next += 1
+          else stuck = true
+        else if inflater.inflate(probe) > 0 || (!inflater.finished && !inflater.needsInput) then
+          stuck = true
+      Option.when(filled == out.length && !stuck && inflater.finished)(out)
     finally inflater.end()
 
   /** Undoes each row's filter in place; false at a filter type that does not exist. */
