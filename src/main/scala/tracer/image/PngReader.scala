@@ -148,14 +148,17 @@ private[image] object PngReader:
       var filled = 0
       var next   = 0
       var stuck  = false
+      // Gives the inflater the next IDAT chunk; false when there is none left.
+      def feed(): Boolean =
+        if next < idats.length then
+          val (from, length) = idats(next)
+          inflater.setInput(bytes, from, length)
+          next += 1
+          true
+        else false
       // Why: inflate until the rows are whole, feeding the next IDAT when the inflater needs it.
       while filled < out.length && !stuck do
-        if inflater.needsInput then
-          if next < idats.length then
-            val (from, length) = idats(next)
-            inflater.setInput(bytes, from, length)
-            next += 1
-          else stuck = true
+        if inflater.needsInput then stuck = !feed()
         else
           val n = inflater.inflate(out, filled, out.length - filled)
           filled += n
@@ -166,12 +169,7 @@ private[image] object PngReader:
       val probe = new Array[Byte](1)
       // Why: feeding the rest of the IDAT chunks until the inflater reaches the stream's end.
       while filled == out.length && !stuck && !inflater.finished do
-        if inflater.needsInput then
-          if next < idats.length then
-            val (from, length) = idats(next)
-            inflater.setInput(bytes, from, length)
-            next += 1
-          else stuck = true
+        if inflater.needsInput then stuck = !feed()
         else if inflater.inflate(probe) > 0 || (!inflater.finished && !inflater.needsInput) then
           stuck = true
       Option.when(filled == out.length && !stuck && inflater.finished)(out)
