@@ -65,6 +65,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // (docs/performance.md, round 5; WorldBench).
     val stack   = query.nodes
     val entries = query.entries
+    val lanes   = query.lanes
     var best    = limitIndex
     var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
@@ -90,6 +91,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             bestT,
+            lanes,
             ordered = true
           )
       while sp > 0 do
@@ -128,6 +130,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
               sy,
               sz,
               bestT,
+              lanes,
               ordered = true
             )
     }
@@ -151,6 +154,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
     val stack   = query.nodes
     val entries = query.entries
+    val lanes   = query.lanes
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  =
@@ -173,6 +177,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             limit,
+            lanes,
             ordered = false
           )
       while sp > 0 && !hit do
@@ -203,6 +208,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             limit,
+            lanes,
             ordered = false
           )
       hit
@@ -385,6 +391,11 @@ final class Query:
     */
   private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
   private[render] val meshEntries = new Array[Double](Bvh.StackSize)
+
+  /** The four entry distances of the last wide node tested at once ([[WideLanes.entries]]),
+    * shared by both walks: each reads them before it tests a leaf.
+    */
+  private[render] val lanes = new Array[Double](WideTree.Width)
 
   /** The face the last mesh test met first ([[MeshTree.nearest]]). */
   // Why: the second result of a mesh's test, written instead of allocating a pair per test.
