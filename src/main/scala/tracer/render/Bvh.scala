@@ -65,7 +65,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // (docs/performance.md, round 5; WorldBench).
     val stack   = query.nodes
     val entries = query.entries
-    val lanes   = query.lanes
     var best    = limitIndex
     var bestT   = limit
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
@@ -91,7 +90,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             bestT,
-            lanes,
             ordered = true
           )
       while sp > 0 do
@@ -130,7 +128,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
               sy,
               sz,
               bestT,
-              lanes,
               ordered = true
             )
     }
@@ -154,7 +151,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
     val stack   = query.nodes
     val entries = query.entries
-    val lanes   = query.lanes
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  =
@@ -177,7 +173,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             limit,
-            lanes,
             ordered = false
           )
       while sp > 0 && !hit do
@@ -208,7 +203,6 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sy,
             sz,
             limit,
-            lanes,
             ordered = false
           )
       hit
@@ -391,11 +385,6 @@ final class Query:
     */
   private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
   private[render] val meshEntries = new Array[Double](Bvh.StackSize)
-
-  /** The four entry distances of the last wide node tested at once ([[WideLanes.entries]]),
-    * shared by both walks: each reads them before it tests a leaf.
-    */
-  private[render] val lanes = new Array[Double](WideTree.Width)
 
   /** The face the last mesh test met first ([[MeshTree.nearest]]). */
   // Why: the second result of a mesh's test, written instead of allocating a pair per test.

@@ -51,7 +51,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     // walk is still under way on the first), face tests on the leaf-order arrays.
     val stack   = query.meshNodes
     val entries = query.meshEntries
-    val lanes   = query.lanes
     var best    = Int.MaxValue
     var bestT   = limit
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
@@ -75,7 +74,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
             sy,
             sz,
             bestT,
-            lanes,
             true
           )
       while sp > 0 do
@@ -112,7 +110,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
               sy,
               sz,
               bestT,
-              lanes,
               true
             )
     }
@@ -135,7 +132,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
     val stack   = query.meshNodes
     val entries = query.meshEntries
-    val lanes   = query.lanes
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
       var sp  =
@@ -158,7 +154,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
             sy,
             sz,
             limit,
-            lanes,
             false
           )
       while sp > 0 && !hit do
@@ -189,7 +184,6 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
             sy,
             sz,
             limit,
-            lanes,
             false
           )
       hit

@@ -5,14 +5,6 @@ package tracer.render
   */
 private[render] object WideWalk:
 
-  /** True when the walks test a node's four child boxes at once ([[WideLanes]]): the Vector API
-    * module was resolved at start-up (the launcher adds it on JDK 25 and newer) and
-    * `-Dtracer.lanes=false` does not turn it off. Otherwise (JDK 17) the scalar [[entry]].
-    */
-  val lanes: Boolean =
-    ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent &&
-      System.getProperty("tracer.lanes") != "false"
-
   /** Runs `body` on the ray's inverse direction and, per axis, the offset (0 or 3) of a box's
     * near corner within its six coordinates.
     *
@@ -36,8 +28,7 @@ private[render] object WideWalk:
 
   /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
     * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
-    * farthest first, so the nearest is popped next. Returns the new stack size. `out`: four
-    * doubles of scratch for [[WideLanes.entries]].
+    * farthest first, so the nearest is popped next. Returns the new stack size.
     */
   inline def push(
       wb: Array[Float],
@@ -56,22 +47,15 @@ private[render] object WideWalk:
       sy: Int,
       sz: Int,
       limit: Double,
-      out: Array[Double],
       inline ordered: Boolean
   ): Int =
-    val vector = lanes
-    val hits   =
-      if vector then WideLanes.entries(wb, 24 * node, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit, out)
-      else 0
     // Why: the stack top moves as slots are pushed; an insertion sort keeps them farthest first.
     var top = sp
     var c   = 0
     while c < WideTree.Width do
       val slot = WideTree.Width * node + c
       if wn(slot) >= 0 then
-        val t =
-          if vector then if (hits >> c & 1) != 0 then out(c) else Double.PositiveInfinity
-          else entry(wb, 24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
+        val t = entry(wb, 24 * node + c, ox, oy, oz, ix, iy, iz, sx, sy, sz, limit)
         if t < Double.PositiveInfinity then
           var j = top
           if ordered then
