@@ -70,34 +70,13 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
     var face = -1
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      var sp =
-        if wide.size == 0 then 0
-        else
-          WideWalk.push(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            bestT,
-            ordered = true
-          )
+      var sp = WideWalk.seed(wide.size, stack, entries)
       while sp > 0 do
         sp -= 1
         val slot = stack(sp)
         // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
         if entries(sp) <= bestT then
-          val count = wn(slot)
+          val count = WideWalk.count(wn, slot)
           if count > 0 then
             var k   = wc(slot)
             val end = k + count
@@ -114,7 +93,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sp = WideWalk.push(
               wb,
               wn,
-              wc(slot),
+              WideWalk.node(wc, slot),
               sp,
               stack,
               entries,
@@ -153,32 +132,11 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     val entries = query.entries
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
-      var sp  =
-        if wide.size == 0 then 0
-        else
-          WideWalk.push(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            limit,
-            ordered = false
-          )
+      var sp  = WideWalk.seed(wide.size, stack, entries)
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)
-        val count = wn(slot)
+        val count = WideWalk.count(wn, slot)
         if count > 0 then
           var k   = wc(slot)
           val end = k + count
@@ -189,7 +147,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
           sp = WideWalk.push(
             wb,
             wn,
-            wc(slot),
+            WideWalk.node(wc, slot),
             sp,
             stack,
             entries,

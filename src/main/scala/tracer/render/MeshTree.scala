@@ -54,33 +54,12 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     var best    = Int.MaxValue
     var bestT   = limit
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      var sp =
-        if wide.size == 0 then 0
-        else
-          WideWalk.push(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            bestT,
-            true
-          )
+      var sp = WideWalk.seed(wide.size, stack, entries)
       while sp > 0 do
         sp -= 1
         val slot = stack(sp)
         if entries(sp) <= bestT then
-          val count = wn(slot)
+          val count = WideWalk.count(wn, slot)
           if count > 0 then
             var k   = wc(slot)
             val end = k + count
@@ -96,7 +75,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
             sp = WideWalk.push(
               wb,
               wn,
-              wc(slot),
+              WideWalk.node(wc, slot),
               sp,
               stack,
               entries,
@@ -134,32 +113,11 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     val entries = query.meshEntries
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
-      var sp  =
-        if wide.size == 0 then 0
-        else
-          WideWalk.push(
-            wb,
-            wn,
-            0,
-            0,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            limit,
-            false
-          )
+      var sp  = WideWalk.seed(wide.size, stack, entries)
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)
-        val count = wn(slot)
+        val count = WideWalk.count(wn, slot)
         if count > 0 then
           var k   = wc(slot)
           val end = k + count
@@ -170,7 +128,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
           sp = WideWalk.push(
             wb,
             wn,
-            wc(slot),
+            WideWalk.node(wc, slot),
             sp,
             stack,
             entries,

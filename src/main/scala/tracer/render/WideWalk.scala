@@ -26,6 +26,31 @@ private[render] object WideWalk:
       if iz >= 0 then 0 else 3
     )
 
+  /** The stack slot that stands for the root node, which no slot of the tree links to. */
+  final val Root = -1
+
+  /** Seeds the stack of a walk down a tree of `size` nodes with the [[Root]] at entry distance
+    * 0 and returns its size (0 for an empty tree): the root's children are then pushed by the
+    * walk's one [[push]] site, as every other node's.
+    *
+    * Perf: one inlined push per walk instead of two (the root's and the inner nodes'), so C2 has
+    * half the push code to compile in each (docs/performance.md, round 9, vector). The root's
+    * entry 0 passes the walk's `entries(sp) <= best` test exactly when the old root push could
+    * push anything (a slot's entry is at least 0 and at most the limit).
+    */
+  inline def seed(size: Int, stack: Array[Int], entries: Array[Double]): Int =
+    if size == 0 then 0
+    else
+      stack(0) = Root
+      entries(0) = 0.0
+      1
+
+  /** The primitive count of stack slot `slot` (0, an inner node, for the [[Root]]). */
+  inline def count(wn: Array[Int], slot: Int): Int = if slot == Root then 0 else wn(slot)
+
+  /** The node or first primitive of stack slot `slot` (node 0 for the [[Root]]). */
+  inline def node(wc: Array[Int], slot: Int): Int = if slot == Root then 0 else wc(slot)
+
   /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
     * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the
     * farthest first, so the nearest is popped next. Returns the new stack size.
