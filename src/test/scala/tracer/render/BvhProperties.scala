@@ -149,6 +149,26 @@ class BvhProperties extends ScalaCheckSuite:
       }
     }
 
+  property("limits at or below zero, or tiny: nearestAlong and occluded agree with every shape"):
+    // The walks seed their stacks with the root at entry 0 (WideWalk.seed): a limit below that
+    // must still find nothing, and the smallest limits what testing every shape finds.
+    val limits = Gen.oneOf(0.0, -0.0, -1.0, Double.MinPositiveValue, 1e-9)
+    forAll(world, Gen.listOfN(50, ray), limits) { (w, rays, limit) =>
+      val query = w.newQuery()
+      rays.foreach { r =>
+        val i = w.nearestByBruteForce(r)
+        val t = if i < 0 then Double.PositiveInfinity else Shape.distance(w.shape(i), r)
+        val o = r.origin
+        val d = r.direction
+        assertEquals(
+          w.nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, limit, query),
+          if t <= limit then i else -1,
+          r.toString
+        )
+        assertEquals(w.occluded(r, limit, query), t < limit, r.toString)
+      }
+    }
+
   test("shapes hit at the same distance: the lowest index wins, wherever they sit in the tree"):
     // Many copies of one triangle and sphere, interleaved: every ray that hits them ties.
     val tile   = Triangle(Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(-1, 0, 1))
