@@ -235,6 +235,11 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
   /** The number of primitives in the tree's leaves, for tests. */
   def primitiveCount: Int = prims.size
 
+  /** True when some walk takes more than one node (of this tree or a mesh's): only then can a
+    * shadow ray's guess ([[blocks]]) save a walk more than it costs.
+    */
+  val deep: Boolean = wide.size > 1 || prims.meshes.exists(_.nodeCount > 1)
+
   /** The index in `shapes` of primitive `k` (leaf order), for tests. */
   private[render] def shapeOf(k: Int): Int = prims.index(k)
 

@@ -41,8 +41,10 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   // row's primary points) is tested before the walk; for a mesh, the faces below the node of its
   // tree that held the blocking face. A ray the walk finds unblocked clears the guess: most rays
   // of an open scene are, and a kept guess costs each of them a test (docs/performance.md,
-  // round 9). The answer is the walk's either way (ShadowGuessProperties).
+  // round 9). The answer is the walk's either way (ShadowGuessProperties). A world whose walks
+  // take one node each (4K few: 4 bounded shapes) guesses nothing: there a guess saves no walk.
   private val tree      = world.tree
+  private val guessing  = tree.deep && !world.transmits
   private val guess     = Array.fill(Shadows.Depths * world.lights.length)(-1)
   private val guessNode = new Array[Int](Shadows.Depths * world.lights.length)
 
@@ -140,7 +142,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       dz: Double,
       reach: Double
   ): Double =
-    if world.transmits || inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
+    if !guessing || inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
     else
       val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
       val b = guess(g)
