@@ -143,6 +143,7 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
           while k < end && !hit do
             hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
             k += 1
+          if hit then query.blocker = k - 1
         else
           sp = WideWalk.push(
             wb,
@@ -165,6 +166,40 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
           )
       hit
     }
+
+  /** True when primitive `k` (in leaf order, as [[occluded]] leaves a blocker in
+    * `query.blocker`) is met by the ray at a t below `limit`: [[Primitives.blocks]], except that
+    * a mesh is walked from node `node` of its own tree down ([[MeshTree.occludedBelow]]). A
+    * shadow ray's guess, tested before the walk ([[Shadows.pointToward]]).
+    */
+  def blocks(
+      k: Int,
+      node: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    if prims.kind(k) == Primitives.MeshKind then
+      prims
+        .meshes(prims.data(Primitives.Stride * k).toInt)
+        .occludedBelow(node, ox, oy, oz, dx, dy, dz, limit, query)
+    else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+
+  /** The number of primitives in the tree's leaves, for tests. */
+  def primitiveCount: Int = prims.size
+
+  /** True when some walk takes more than one node (of this tree or a mesh's): only then can a
+    * shadow ray's guess ([[blocks]]) save a walk more than it costs.
+    */
+  val deep: Boolean = wide.size > 1 || prims.meshes.exists(_.nodeCount > 1)
+
+  /** The index in `shapes` of primitive `k` (leaf order), for tests. */
+  private[render] def shapeOf(k: Int): Int = prims.index(k)
 
   /** [[nearest]] on the binary tree the wide one was collapsed from: the same answers, kept to
     * measure what the wide tree gains (`WorldBench`).
@@ -343,6 +378,18 @@ final class Query:
     */
   private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
   private[render] val meshEntries = new Array[Double](Bvh.StackSize)
+
+  /** The primitive (leaf order) that the last [[Bvh.occluded]] walk found blocking the ray;
+    * written only when it finds one.
+    */
+  // Why: a second result of the any-hit walk, the shadow rays' guess for the next ray.
+  private[render] var blocker: Int = -1
+
+  /** The node of a mesh's tree whose children hold the face the last [[MeshTree.occluded]] walk
+    * found blocking the ray; written only when it finds one.
+    */
+  // Why: as blocker, for a mesh.
+  private[render] var blockerNode: Int = 0
 
   /** The face the last mesh test met first ([[MeshTree.nearest]]). */
   // Why: the second result of a mesh's test, written instead of allocating a pair per test.

@@ -96,9 +96,22 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     if best == Int.MaxValue then Double.PositiveInfinity else bestT
 
   /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
-    * first.
+    * first, and leaves the node whose children hold it in `query.blockerNode`.
     */
   def occluded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean = occludedBelow(0, ox, oy, oz, dx, dy, dz, limit, query)
+
+  /** [[occluded]] among the faces below node `node` of the tree (0: the root, all of them). */
+  def occludedBelow(
+      node: Int,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -113,7 +126,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
     val entries = query.meshEntries
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
-      var sp  = WideWalk.seed(wide.size, stack, entries)
+      var sp  = WideWalk.seed(wide.size, stack, entries, node)
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)
@@ -124,6 +137,7 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
           while k < end && !hit do
             hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
             k += 1
+          if hit then query.blockerNode = slot / WideTree.Width
         else
           sp = WideWalk.push(
             wb,

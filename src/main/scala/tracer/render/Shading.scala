@@ -109,7 +109,8 @@ final class Shading(world: World, mode: ShadingMode):
     lit(surface, pigment(i, leaf, px, py, pz), sx, sy, sz, leaning, s0x, s0y, s0z, px, py, pz)(
       dx,
       dy,
-      dz
+      dz,
+      depth
     )
     val litR = red
     val litG = green
@@ -159,7 +160,7 @@ final class Shading(world: World, mode: ShadingMode):
       px: Double,
       py: Double,
       pz: Double
-  )(dx: Double, dy: Double, dz: Double): Unit =
+  )(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
     val oneSided = leaning || surface.transmit > 0
     var r        = 0.0
@@ -183,7 +184,8 @@ final class Shading(world: World, mode: ShadingMode):
       val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
       if !behind then
         val share =
-          if light.area.isEmpty then shadows.pointAlong(s0x, s0y, s0z, sdx, sdy, sdz, reach)
+          if light.area.isEmpty then
+            shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
           else shadows.areaFrom(s0x, s0y, s0z, k)
         if share > 0 then
           // Without fade the share is used as it is (the same bits as before version 4).

@@ -35,6 +35,18 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   private val axes   = new Array[Double](21)
   private val low    = new Array[Double](7)
   private val high   = new Array[Double](7)
+  // Perf: the last blocker first. A point light's shadow rays from neighbouring points of a row
+  // are mostly blocked by the same shape, so the primitive that blocked the last one from the
+  // same light and depth (mod Shadows.Depths: a mirror's points shoot theirs between two of a
+  // row's primary points) is tested before the walk; for a mesh, the faces below the node of its
+  // tree that held the blocking face. A ray the walk finds unblocked clears the guess: most rays
+  // of an open scene are, and a kept guess costs each of them a test (docs/performance.md,
+  // round 9). The answer is the walk's either way (ShadowGuessProperties). A world whose walks
+  // take one node each (4K few: 4 bounded shapes) guesses nothing: there a guess saves no walk.
+  private val tree      = world.tree
+  private val guessing  = tree.deep && !world.transmits
+  private val guess     = Array.fill(Shadows.Depths * world.lights.length)(-1)
+  private val guessNode = new Array[Int](Shadows.Depths * world.lights.length)
 
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
@@ -114,6 +126,34 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
         if reach > 0 then pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
         else 1.0
     grid(k)
+
+  /** [[pointAlong]] toward the world's light `k`, a point light, from a point shaded `depth`
+    * reflections or refractions from the last allowed: the same share, trying the shape that
+    * blocked that light's last shadow ray from the same depth first.
+    */
+  def pointToward(
+      k: Int,
+      depth: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    if !guessing || inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
+    else
+      val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
+      val b = guess(g)
+      if b >= 0 && tree.blocks(b, guessNode(g), fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+      else
+        query.blocker = -1
+        val blocked = world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query)
+        // An unbounded shape's block (a plane's) leaves blocker at −1: no guess.
+        guess(g) = if blocked then query.blocker else -1
+        guessNode(g) = query.blockerNode
+        if blocked then 0.0 else 1.0
 
   /** [[point]] from (fx, fy, fz) in unit direction (dx, dy, dz). */
   def pointAlong(
@@ -423,3 +463,6 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
 object Shadows:
   /** A beam's margin, as a share of the size of the coordinates compared. */
   val Margin: Double = 1e-7
+
+  /** The depths (mod this power of two) a point light's blocker guesses are kept apart for. */
+  val Depths: Int = 4

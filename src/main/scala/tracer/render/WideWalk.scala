@@ -29,27 +29,32 @@ private[render] object WideWalk:
   /** The stack slot that stands for the root node, which no slot of the tree links to. */
   final val Root = -1
 
-  /** Seeds the stack of a walk down a tree of `size` nodes with the [[Root]] at entry distance
-    * 0 and returns its size (0 for an empty tree): the root's children are then pushed by the
-    * walk's one [[push]] site, as every other node's.
+  /** The stack slot that stands for node `node` itself ([[Root]] for node 0): a negative slot,
+    * which no slot of the tree is, so a walk can start below the root.
+    */
+  inline def slotOf(node: Int): Int = Root - node
+
+  /** Seeds the stack of a walk down a tree of `size` nodes with node `from` (the [[Root]] by
+    * default) at entry distance 0 and returns its size (0 for an empty tree): that node's
+    * children are then pushed by the walk's one [[push]] site, as every other node's.
     *
     * Perf: one inlined push per walk instead of two (the root's and the inner nodes'), so C2 has
-    * half the push code to compile in each (docs/performance.md, round 9, vector). The root's
-    * entry 0 passes the walk's `entries(sp) <= best` test exactly when the old root push could
+    * half the push code to compile in each (docs/performance.md, round 9, vector). The seed's
+    * entry 0 passes the walk's `entries(sp) <= best` test exactly when the old first push could
     * push anything (a slot's entry is at least 0 and at most the limit).
     */
-  inline def seed(size: Int, stack: Array[Int], entries: Array[Double]): Int =
+  inline def seed(size: Int, stack: Array[Int], entries: Array[Double], from: Int = 0): Int =
     if size == 0 then 0
     else
-      stack(0) = Root
+      stack(0) = slotOf(from)
       entries(0) = 0.0
       1
 
-  /** The primitive count of stack slot `slot` (0, an inner node, for the [[Root]]). */
-  inline def count(wn: Array[Int], slot: Int): Int = if slot == Root then 0 else wn(slot)
+  /** The primitive count of stack slot `slot` (0, an inner node, for a seeded node). */
+  inline def count(wn: Array[Int], slot: Int): Int = if slot < 0 then 0 else wn(slot)
 
-  /** The node or first primitive of stack slot `slot` (node 0 for the [[Root]]). */
-  inline def node(wc: Array[Int], slot: Int): Int = if slot == Root then 0 else wc(slot)
+  /** The node or first primitive of stack slot `slot` (the node itself for a seeded one). */
+  inline def node(wc: Array[Int], slot: Int): Int = if slot < 0 then Root - slot else wc(slot)
 
   /** Pushes the slots of wide node `node` (boxes `wb`, counts `wn`) whose boxes the ray enters
     * before `limit` onto the stack above `sp`, with their entry distances; `ordered`: the

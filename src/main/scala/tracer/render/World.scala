@@ -78,6 +78,9 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   /** The number of shapes. */
   def size: Int = shapes.length
 
+  /** The hierarchy over the bounded shapes ([[Shadows]] tests a blocker guess on it). */
+  private[render] def tree: Bvh = bvh
+
   /** The tree the hierarchy built for `mesh`, one of the world's shapes (tests observe that it is
     * built once).
     */

@@ -1,0 +1,105 @@
+package tracer.render
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.geometry.{Box, Mesh, Plane, Ray, Shape, Sphere, Triangle}
+import tracer.math.Vec3
+import tracer.scene.{Camera, Light, Scene, SceneObject}
+import tracer.testkit.Generators.unitVec
+
+/** The point lights' last-blocker guess ([[Shadows.pointToward]], [[Bvh.blocks]]) never changes
+  * an answer: a guess that blocks is a blocker the walk finds too, and a shadow ray gets the
+  * walk's share whatever was guessed before it.
+  */
+class ShadowGuessProperties extends ScalaCheckSuite:
+
+  private val small = Gen.choose(-6.0, 6.0)
+  private val point = for x <- small; y <- small; z <- small yield Vec3(x, y, z)
+
+  /** A bumpy grid of squares (two faces each) at height about y, n × n squares. */
+  private def terrain(n: Int, y: Double, bump: Double): Mesh =
+    val vertices =
+      IArray.from(for
+        i <- 0 to n; j <- 0 to n
+        c <- List(-4 + 8.0 * i / n, y + bump * Math.sin(i * 1.7 + j * 0.9), -4 + 8.0 * j / n)
+      yield c)
+    def at(i: Int, j: Int) = i * (n + 1) + j
+    val corners            = IArray.from(for
+      i <- 0 until n; j <- 0 until n
+      c <- List(at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1))
+    yield c)
+    Mesh(vertices, corners)
+
+  private val shape: Gen[Shape] = Gen.frequency(
+    4 -> (for c <- point; r <- Gen.choose(0.1, 1.5) yield Sphere(c, r)),
+    3 -> Gen.zip(point, point, point).retryUntil(Triangle.isProper.tupled).map(Triangle(_, _, _)),
+    1 -> (for c <- point; d <- Gen.choose(0.2, 2.0) yield Box(c, c + Vec3(d, d, d))),
+    1 -> (for n <- Gen.choose(2, 12); y <- small; b <- Gen.choose(0.0, 1.0)
+    yield terrain(n, y, b)),
+    1 -> Gen.choose(-6, 6).map(d => Plane.at(Vec3.UnitY, d))
+  )
+
+  private val lights = Gen.listOfN(2, point.map(p => Light(p * 2)))
+
+  private val world: Gen[World] =
+    for n <- Gen.choose(1, 40); shapes <- Gen.listOfN(n, shape); ls <- lights
+    yield World(
+      Scene(
+        Camera(Vec3(0, 0, -20), Vec3.Zero),
+        lights = ls.toVector,
+        objects = shapes.map(SceneObject(_)).toVector
+      )
+    )
+
+  /** Points along a random segment: neighbouring shadow rays, as a row's shading points. */
+  private val row: Gen[List[Vec3]] =
+    for a <- point; d <- unitVec; n <- Gen.choose(5, 40); step <- Gen.choose(0.01, 0.5)
+    yield List.tabulate(n)(i => a + d * (i * step))
+
+  /** The ray from `p` toward `l`, its direction and length, or None when they coincide. */
+  private def toward(p: Vec3, l: Vec3): Option[(Vec3, Double)] =
+    val reach = (l - p).length
+    if reach > 0 then Some(((l - p) / reach, reach)) else None
+
+  property("a guess that blocks is a blocker the walk finds, and guessing the root is the test"):
+    forAll(world, Gen.listOfN(20, Gen.zip(point, unitVec)), Gen.choose(0.5, 20.0)) {
+      (w, rays, limit) =>
+        val query = w.newQuery()
+        val tree  = w.tree
+        rays.foreach { (o, d) =>
+          val walked = w.occludedAlong(o.x, o.y, o.z, d.x, d.y, d.z, limit, query)
+          (0 until tree.primitiveCount).foreach { k =>
+            val shape = w.shape(tree.shapeOf(k))
+            val nodes = shape match
+              case m: Mesh => w.meshTree(m).fold(1)(_.nodeCount)
+              case _       => 1
+            (0 until nodes).foreach { node =>
+              val guessed = tree.blocks(k, node, o.x, o.y, o.z, d.x, d.y, d.z, limit, query)
+              if guessed then assert(walked, s"$shape $node ${Ray(o, d)} $limit")
+              if node == 0 then
+                assertEquals(
+                  guessed,
+                  Shape.distance(shape, Ray(o, d)) < limit,
+                  s"$shape ${Ray(o, d)}"
+                )
+            }
+          }
+        }
+    }
+
+  property("pointToward gives the walk's share, whatever light, depth and guess came before"):
+    forAll(world, Gen.listOfN(6, Gen.zip(row, Gen.choose(0, 1), Gen.choose(0, 9)))) { (w, rows) =>
+      val query   = w.newQuery()
+      val shadows = Shadows(w, w.newQuery())
+      rows.foreach { (points, k, depth) =>
+        points.foreach { p =>
+          toward(p, w.lights(k).location).foreach { (d, reach) =>
+            val walked = w.occludedAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach, query)
+            val share  = shadows.pointToward(k, depth, p.x, p.y, p.z, d.x, d.y, d.z, reach)
+            assertEquals(share, if walked then 0.0 else 1.0, s"$p $k $depth")
+            assertEquals(share, shadows.pointAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach))
+          }
+        }
+      }
+    }
