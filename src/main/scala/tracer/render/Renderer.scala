@@ -128,21 +128,13 @@ object Renderer:
     private val levels = ByteLevels(config.encoding)
 
     def row(at: Int, y: Int, out: PixelWriter): Unit =
-      val shading  = Shading(world, mode)
-      val encoding = config.encoding
-      // Perf: a counted loop over the row, each pixel handed on as three doubles (RenderBench).
+      val shading = Shading(world, mode)
+      // Perf: a counted loop over the row, each pixel a method call (encoded): the loop stays
+      // small, so the JIT compiles the pixel once, not the whole row on-stack and then again
+      // (docs/performance.md, round 9; RenderBench).
       var x = 0
       while x < config.columns do
-        pixel(shading, x, y, inRange = true) { (r, g, b) =>
-          encoding match
-            case Encoding.Linear => out.put(x, at, r, g, b)
-            case _               =>
-              // Encoding.encode(colour): brought into range, then each channel encoded; the
-              // table gives the sample that the bitmap would store of the encoded value.
-              Colour.inRangeOf(r, g, b)((r, g, b) =>
-                out.put(x, at, levels.encoded(r), levels.encoded(g), levels.encoded(b))
-              )
-        }
+        encoded(shading, x, y, at, out)
         x += 1
 
     def linearRow(at: Int, y: Int, out: PixelWriter): Unit =
@@ -150,51 +142,89 @@ object Renderer:
       // Perf: as row.
       var x = 0
       while x < config.columns do
-        pixel(shading, x, y, inRange = false)((r, g, b) => out.put(x, at, r, g, b))
+        linear(shading, x, y, at, out)
         x += 1
 
-    /** Pixel (x, y), handed to `k` as three doubles: the mean of its n × n samples, each brought
-      * into range first when `inRange` (rendering.md: the 8-bit rule), or as they are
-      * (floating-point output).
+    /** Pixel (x, y) of the picture, encoded, stored as (x, at) through `out`. */
+    private def encoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
+      if n == 1 then
+        // The common case: one sample a pixel, traced here (no loop in this method).
+        val o = projection.origin
+        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
+          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+        )
+        store(x, at, out)(shading.r, shading.g, shading.b)
+      else sampledEncoded(shading, x, y, at, out)
+
+    /** [[encoded]] of a pixel of n × n samples (n > 1), out of line: its loops are not the common
+      * path's.
+      */
+    private def sampledEncoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
+      samples(shading, x, y, inRange = true)((r, g, b) => store(x, at, out)(r, g, b))
+
+    /** Pixel (x, y) of the picture as [[linearRow]] gives it, stored as (x, at) through `out`. */
+    private def linear(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
+      if n == 1 then
+        val o = projection.origin
+        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
+          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+        )
+        out.put(x, at, shading.r, shading.g, shading.b)
+      else samples(shading, x, y, inRange = false)((r, g, b) => out.put(x, at, r, g, b))
+
+    /** Stores the pixel (r, g, b) as (x, at) through `out`, encoded as the picture's encoding
+      * says.
+      */
+    private inline def store(x: Int, at: Int, out: PixelWriter)(
+        r: Double,
+        g: Double,
+        b: Double
+    ): Unit =
+      config.encoding match
+        case Encoding.Linear => out.put(x, at, r, g, b)
+        case _               =>
+          // Encoding.encode(colour): brought into range, then each channel encoded; the
+          // table gives the sample that the bitmap would store of the encoded value.
+          Colour.inRangeOf(r, g, b)((r, g, b) =>
+            out.put(x, at, levels.encoded(r), levels.encoded(g), levels.encoded(b))
+          )
+
+    /** Pixel (x, y) of n × n samples (n > 1), handed to `k` as three doubles: the mean of its
+      * samples, each brought into range first when `inRange` (rendering.md: the 8-bit rule), or
+      * as they are (floating-point output).
       *
       * Perf: inline with an inline function, the samples' channels summed in locals and each
       * primary ray traced from its six doubles: no Ray or Colour a sample (PrimaryRayBench).
       */
-    private inline def pixel(shading: Shading, x: Int, y: Int, inRange: Boolean)(
+    private inline def samples(shading: Shading, x: Int, y: Int, inRange: Boolean)(
         inline k: (Double, Double, Double) => Unit
     ): Unit =
       val o = projection.origin
-      if n == 1 then
-        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
-          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
-        )
-        k(shading.r, shading.g, shading.b)
-      else
-        var r = 0.0
-        var g = 0.0
-        var b = 0.0
-        var j = 0
-        while j < n do
-          var i = 0
-          while i < n do
-            projection.direction(x + offsets(i), y + offsets(j))((dx, dy, dz) =>
-              shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
-            )
-            if inRange then
-              Colour.inRangeOf(shading.r, shading.g, shading.b) { (sr, sg, sb) =>
-                r += sr
-                g += sg
-                b += sb
-              }
-            else
-              r += shading.r
-              g += shading.g
-              b += shading.b
-            i += 1
-          j += 1
-        // Colour(r, g, b) / (n * n)
-        val samples = (n * n).toDouble
-        k(r / samples, g / samples, b / samples)
+      var r = 0.0
+      var g = 0.0
+      var b = 0.0
+      var j = 0
+      while j < n do
+        var i = 0
+        while i < n do
+          projection.direction(x + offsets(i), y + offsets(j))((dx, dy, dz) =>
+            shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+          )
+          if inRange then
+            Colour.inRangeOf(shading.r, shading.g, shading.b) { (sr, sg, sb) =>
+              r += sr
+              g += sg
+              b += sb
+            }
+          else
+            r += shading.r
+            g += shading.g
+            b += shading.b
+          i += 1
+        j += 1
+      // Colour(r, g, b) / (n * n)
+      val samples = (n * n).toDouble
+      k(r / samples, g / samples, b / samples)
 
   /** The path tracer's frame: a pixel is the mean of its samples, brought into range only as a
     * whole for an 8-bit file (an unbiased estimate is never clamped sample by sample).

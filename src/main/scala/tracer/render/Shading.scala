@@ -70,13 +70,18 @@ final class Shading(world: World, mode: ShadingMode):
       // The hit as Shape.hitAt and Shape.shadingNormal give it, in the query's fields.
       Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query)
       mode match
-        case ShadingMode.Quick =>
-          val c = pigment(i, query.leaf, query.px, query.py, query.pz)
-          val a = Math.abs(query.sx * dx + query.sy * dy + query.sz * dz)
-          red = c.r * a
-          green = c.g * a
-          blue = c.b * a
-        case ShadingMode.Full => shade(i, dx, dy, dz, depth, insides)
+        case ShadingMode.Quick => quick(i, dx, dy, dz)
+        case ShadingMode.Full  => shade(i, dx, dy, dz, depth, insides)
+
+  /** Quick mode's colour of the hit the query holds on shape `i`: its surface colour C scaled by
+    * |s · d|, left in red, green and blue.
+    */
+  private def quick(i: Int, dx: Double, dy: Double, dz: Double): Unit =
+    val c = pigment(i, query.leaf, query.px, query.py, query.pz)
+    val a = Math.abs(query.sx * dx + query.sy * dy + query.sz * dz)
+    red = c.r * a
+    green = c.g * a
+    blue = c.b * a
 
   /** The full colour of the hit the query holds on shape `i`, seen along direction d. */
   private def shade(
@@ -131,10 +136,13 @@ final class Shading(world: World, mode: ShadingMode):
     blue = litB + blue
     // Version 4: a glowing surface adds its emission where it is seen from the side it emits
     // from (its outward side), after shading; it lights nothing else.
-    if surface.emits && front then
-      red = red + surface.emission.r
-      green = green + surface.emission.g
-      blue = blue + surface.emission.b
+    if front && surface.emits then glow(surface)
+
+  /** Adds the emission of a glowing `surface` to red, green and blue. */
+  private def glow(surface: Surface): Unit =
+    red = red + surface.emission.r
+    green = green + surface.emission.g
+    blue = blue + surface.emission.b
 
   /** The light the surface sends back from every light that reaches S0, left in red, green and
     * blue: diffuse C ⊙ colour(L) · diffuse · (1 − transmit) · |rn · Sd| and white highlights
@@ -144,10 +152,12 @@ final class Shading(world: World, mode: ShadingMode):
     *
     * `leaning` says that s is a smooth mesh's interpolated normal, not the face's own.
     *
-    * Perf: inline, with the channels summed in locals: no Colour or closure per light, and the
-    * hit's values stay in one compiled method (RenderBench; docs/performance.md, steps 2 and 9).
+    * Perf: the channels summed in the fields, light by light in document order, each light in a
+    * method of its own ([[light]]): this loop stays small, so the JIT compiles the loop, the light
+    * and the shaded point apart and quickly (no large method compiled twice, on-stack and again;
+    * docs/performance.md, round 9), with no Colour or closure per light.
     */
-  private inline def lit(
+  private def lit(
       surface: Surface,
       colour: Colour,
       sx: Double,
@@ -163,55 +173,83 @@ final class Shading(world: World, mode: ShadingMode):
   )(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
     val oneSided = leaning || surface.transmit > 0
-    var r        = 0.0
-    var g        = 0.0
-    var b        = 0.0
-    var k        = 0
+    red = 0.0
+    green = 0.0
+    blue = 0.0
+    // Perf: a counted loop over the lights (see above).
+    var k = 0
     while k < world.lights.length do
-      val light = world.lights(k)
-      val tx    = light.location.x - s0x
-      val ty    = light.location.y - s0y
-      val tz    = light.location.z - s0z
-      val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
-      // Equation 41; a light exactly at S0 shines straight along the normal.
-      val sdx = if reach > 0 then tx / reach else sx
-      val sdy = if reach > 0 then ty / reach else sy
-      val sdz = if reach > 0 then tz / reach else sz
-      val cos = sx * sdx + sy * sdy + sz * sdz
-      // POV-Ray ignores a light behind the shading normal. A flat opaque surface shadows such a
-      // point light by itself; transmitting surfaces, smooth normals and area lights (lit from
-      // off-centre sub-lights) need the rule said out loud.
-      val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
-      if !behind then
-        val share =
-          if light.area.isEmpty then
-            shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
-          else shadows.areaFrom(s0x, s0y, s0z, k)
-        if share > 0 then
-          // Without fade the share is used as it is (the same bits as before version 4).
-          val reaching =
-            if light.fade.isEmpty then share
-            else
-              val fx = light.location.x - px
-              val fy = light.location.y - py
-              val fz = light.location.z - pz
-              share * light.attenuation(Math.sqrt(fx * fx + fy * fy + fz * fz))
-          val lr     = light.colour.r * reaching
-          val lg     = light.colour.g * reaching
-          val lb     = light.colour.b * reaching
-          val facing = Math.abs(cos)
-          r += colour.r * lr * diffuse * facing
-          g += colour.g * lg * diffuse * facing
-          b += colour.b * lb * diffuse * facing
-          if surface.highlighted && cos >= Shading.FarSide then
-            val h = Shading.highlightAlong(surface, sx, sy, sz, dx, dy, dz, sdx, sdy, sdz)
-            r += lr * h
-            g += lg * h
-            b += lb * h
+      light(k, surface, colour, diffuse, oneSided, sx, sy, sz, s0x, s0y, s0z, px, py, pz)(
+        dx,
+        dy,
+        dz,
+        depth
+      )
       k += 1
-    red = r
-    green = g
-    blue = b
+
+  /** Adds to red, green and blue what light `k` gives the point, as [[lit]] says. */
+  private def light(
+      k: Int,
+      surface: Surface,
+      colour: Colour,
+      diffuse: Double,
+      oneSided: Boolean,
+      sx: Double,
+      sy: Double,
+      sz: Double,
+      s0x: Double,
+      s0y: Double,
+      s0z: Double,
+      px: Double,
+      py: Double,
+      pz: Double
+  )(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
+    val light = world.lights(k)
+    val tx    = light.location.x - s0x
+    val ty    = light.location.y - s0y
+    val tz    = light.location.z - s0z
+    val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
+    // Equation 41; a light exactly at S0 shines straight along the normal.
+    val sdx = if reach > 0 then tx / reach else sx
+    val sdy = if reach > 0 then ty / reach else sy
+    val sdz = if reach > 0 then tz / reach else sz
+    val cos = sx * sdx + sy * sdy + sz * sdz
+    // POV-Ray ignores a light behind the shading normal. A flat opaque surface shadows such a
+    // point light by itself; transmitting surfaces, smooth normals and area lights (lit from
+    // off-centre sub-lights) need the rule said out loud.
+    val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
+    if !behind then
+      val share =
+        if light.area.isEmpty then shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
+        else shadows.areaFrom(s0x, s0y, s0z, k)
+      if share > 0 then
+        // Without fade the share is used as it is (the same bits as before version 4).
+        val reaching = if light.fade.isEmpty then share else faded(light, share, px, py, pz)
+        val lr       = light.colour.r * reaching
+        val lg       = light.colour.g * reaching
+        val lb       = light.colour.b * reaching
+        val facing   = Math.abs(cos)
+        red = red + colour.r * lr * diffuse * facing
+        green = green + colour.g * lg * diffuse * facing
+        blue = blue + colour.b * lb * diffuse * facing
+        if surface.highlighted && cos >= Shading.FarSide then
+          val h = Shading.highlightAlong(surface, sx, sy, sz, dx, dy, dz, sdx, sdy, sdz)
+          red = red + lr * h
+          green = green + lg * h
+          blue = blue + lb * h
+
+  /** `share` of a fading `light` scaled by its fade A(d), d the distance from p to the light. */
+  private def faded(
+      light: tracer.scene.Light,
+      share: Double,
+      px: Double,
+      py: Double,
+      pz: Double
+  ): Double =
+    val fx = light.location.x - px
+    val fy = light.location.y - py
+    val fz = light.location.z - pz
+    share * light.attenuation(Math.sqrt(fx * fx + fy * fy + fz * fz))
 
   /** reflection · colour(reflected ray, depth − 1) (equations 43–44), black for no mirror, left
     * in red, green and blue: the ray from S0, d mirrored about the shading normal s.
@@ -288,6 +326,19 @@ final class Shading(world: World, mode: ShadingMode):
     */
   private def pigment(i: Int, leaf: Int, px: Double, py: Double, pz: Double): Colour =
     world.surface(i, leaf).pigment match
+      case Pigment.Solid(c) => c
+      case other            => patterned(other, i, leaf, px, py, pz)
+
+  /** [[pigment]] of a texture or a checker (out of line: the plain colour is the common path). */
+  private def patterned(
+      pigment: Pigment,
+      i: Int,
+      leaf: Int,
+      px: Double,
+      py: Double,
+      pz: Double
+  ): Colour =
+    pigment match
       case Pigment.Solid(c)          => c
       case Pigment.Textured(texture) =>
         val uv = Shape.surfaceCoordinates(world.shape(i), Vec3(px, py, pz), leaf)

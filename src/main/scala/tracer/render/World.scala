@@ -123,22 +123,56 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
       limit: Double,
       query: Query
   ): Int =
-    // Perf: the unbounded shapes in a plain loop (in index order, so the first wins a tie), then
-    // the hierarchy, pruned by the nearest of them.
-    var best  = Int.MaxValue
-    var bestT = limit
-    var k     = 0
-    while k < unbounded.size do
-      val t = Primitives.distance(unbounded, k, bestT, ox, oy, oz, dx, dy, dz, query)
-      if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
-        bestT = t
-        best = unbounded.index(k)
-      k += 1
-    val winner = bvh.nearest(ox, oy, oz, dx, dy, dz, bestT, best, query)
+    // Perf: the unbounded shapes first (their nearest distance left in query.distance), then the
+    // hierarchy, pruned by the nearest of them. Each step is a method of its own, so this one is
+    // small and has no loop: the JIT compiles it once, quickly (docs/performance.md, round 9).
+    val best   = nearestUnbounded(ox, oy, oz, dx, dy, dz, limit, query)
+    val winner = bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
     if winner == Int.MaxValue then
       query.distance = Double.PositiveInfinity
       -1
     else winner
+
+  /** The index of the unbounded shape that the ray from (ox, oy, oz) in unit direction
+    * (dx, dy, dz) hits first at a t ≤ `limit` (the first in index order on a tie), or
+    * `Int.MaxValue` for none; its distance (else `limit`) is left in `query.distance`.
+    */
+  private def nearestUnbounded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Int =
+    // Perf: a plain loop in index order, so the first wins a tie; each shape's test a method of
+    // its own (unboundedDistance), so this loop compiles small.
+    var best  = Int.MaxValue
+    var bestT = limit
+    var k     = 0
+    while k < unbounded.size do
+      val t = unboundedDistance(k, bestT, ox, oy, oz, dx, dy, dz, query)
+      if t < bestT || (t == bestT && t < Double.PositiveInfinity && best == Int.MaxValue) then
+        bestT = t
+        best = unbounded.index(k)
+      k += 1
+    query.distance = bestT
+    best
+
+  /** Primitives.distance of unbounded shape `k` (the kernel's whole test, in one method). */
+  private def unboundedDistance(
+      k: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      query: Query
+  ): Double = Primitives.distance(unbounded, k, cutoff, ox, oy, oz, dx, dy, dz, query)
 
   /** The hit on shape `i` (the last [[nearest]] or [[nearestAlong]] with `query` found it) along
     * `ray`, at `query.distance`: [[tracer.geometry.Shape.hitAt]], except that on a mesh the face
@@ -166,10 +200,10 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
       query: Query
   ): Boolean =
     // Perf: the unbounded shapes in a plain loop that stops at the first blocker (any hit will
-    // do), then the hierarchy; no closure per shadow ray.
+    // do), each test a method of its own (unboundedDistance) so this one compiles small, then
+    // the hierarchy; no closure per shadow ray.
     var k = 0
-    while k < unbounded.size && !(Primitives.distance(
-        unbounded,
+    while k < unbounded.size && !(unboundedDistance(
         k,
         limit,
         ox,
