@@ -21,12 +21,6 @@ final class CrossingBuffer:
   /** The root finder's scratch: four levels of coefficients, roots and ends (Polynomial). */
   private[geometry] val roots = new Array[Double](Polynomial.ScratchSize)
 
-  /** The distance t of crossing `k`, as [[Kernel.collect]] last wrote it. */
-  def tAt(k: Int): Double = t(k)
-
-  /** The leaf of crossing `k`, as [[Kernel.collect]] last wrote it. */
-  def leafAt(k: Int): Int = leaf(k)
-
   /** Room for crossings up to index `n` (exclusive). */
   private[geometry] def ensure(n: Int): Unit =
     if n > t.length then

@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Box, Cone, Csg, CsgOperation, Kernel, Placed, Plane, Ray, Shape, Torus}
+import tracer.geometry.{Plane, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.AreaLight
 
@@ -35,26 +35,6 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   private val axes   = new Array[Double](21)
   private val low    = new Array[Double](7)
   private val high   = new Array[Double](7)
-  // Perf: one query through a clear shape (round 9, docs/performance.md). A shadow ray in a beam
-  // keeps, for each clear shape in the beam (`clear`: a box, cone, torus or non-union
-  // combination, placed or not, with a surface that lets light through), every crossing at
-  // t > 0 from the ray's start (`Kernel.collect`, at its first step), and each step takes the
-  // next of them less the way walked (`walked`, the sum of the steps) instead of testing the
-  // shape again from the moved origin: the gallery's glass tumbler was tested about five times
-  // a ray through it (round 8's counts). For shape i: the walk that kept its crossings
-  // (`keptBy`), and where they lie in `keptT` and `keptLeaf`, from the next one not yet behind
-  // the origin (`next`) until `last`.
-  private val clear    = Array.tabulate(if beam.length > 0 then world.size else 0)(isClear)
-  private val keptBy   = new Array[Int](clear.length)
-  private val next     = new Array[Int](clear.length)
-  private val last     = new Array[Int](clear.length)
-  private var keptT    = new Array[Double](16)
-  private var keptLeaf = new Array[Int](16)
-  private var kept     = 0
-  private var walks    = 0
-  private var walked   = 0.0
-  // Perf: the leaf of the nearest hit when it came from kept crossings (−1: ask Shape.hitAt).
-  private var hitLeaf = -1
 
   /** The share of a point light at distance `reach` in unit direction `toward` from `from`: the
     * product of the `transmit` of every surface crossed at 0 < t < reach (0 at an opaque one).
@@ -185,10 +165,6 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     var oz    = fz
     var left  = reach
     var share = 1.0
-    if inBeamOnly then
-      walks += 1
-      kept = 0
-      walked = 0.0
     while share > 0 && left > 0 do
       // Only hits before what is left of the way count (t ≤ left, then t < left below).
       val i =
@@ -196,16 +172,13 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
         else world.nearestAlong(ox, oy, oz, dx, dy, dz, left, query)
       val t = query.distance
       if i >= 0 && t < left then
-        val leaf =
-          if inBeamOnly && hitLeaf >= 0 then hitLeaf else leafAt(i, ox, oy, oz, dx, dy, dz, t)
-        share *= world.surface(i, leaf).transmit
+        share *= world.surface(i, leafAt(i, ox, oy, oz, dx, dy, dz, t)).transmit
         // Step just past the surface, so the next query does not find it again.
         val step = t + Shading.Epsilon
         ox = ox + dx * step
         oy = oy + dy * step
         oz = oz + dz * step
         left -= step
-        if inBeamOnly then walked += step
       else left = 0
     share
 
@@ -227,78 +200,14 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     var j     = 0
     while j < inBeam do
       val i = beam(j)
-      if clear(i) then
-        val t = clearNext(i, ox, oy, oz, dx, dy, dz, limit)
-        if t < bestT || (t == bestT && t < Double.PositiveInfinity && best < 0) then
-          bestT = t
-          best = i
-      else if enters(i, ox, oy, oz, dx, dy, dz, bestT) then
+      if enters(i, ox, oy, oz, dx, dy, dz, bestT) then
         val t = Primitives.distance(world.each, i, bestT, ox, oy, oz, dx, dy, dz, query)
         if t < bestT || (t == bestT && t < Double.PositiveInfinity && best < 0) then
           bestT = t
           best = i
       j += 1
     query.distance = if best < 0 then Double.PositiveInfinity else bestT
-    hitLeaf = if best >= 0 && clear(best) then keptLeaf(next(best)) else -1
     best
-
-  /** The distance from (ox, oy, oz) along d to the next crossing of clear shape `i`, from the
-    * crossings this walk kept for it (at its first step, when (ox, oy, oz) is the ray's start and
-    * `limit` its reach; none when the ray misses the shape's box); +∞ for none.
-    */
-  private def clearNext(
-      i: Int,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double
-  ): Double =
-    if keptBy(i) != walks then
-      keep(i, ox, oy, oz, dx, dy, dz, enters(i, ox, oy, oz, dx, dy, dz, limit))
-    // The first step's nearest is the shape's distance bit for bit (walked is 0 there);
-    // crossings now at t ≤ 0 are behind the origin.
-    val end = last(i)
-    // Why: the cursor moves on past the crossings left behind.
-    var k = next(i)
-    while k < end && keptT(k) - walked <= 0 do k += 1
-    next(i) = k
-    if k < end then keptT(k) - walked else Double.PositiveInfinity
-
-  /** Collects every crossing of shape `i` along the ray from (ox, oy, oz) into this walk's kept
-    * crossings (none unless `meets`).
-    */
-  private def keep(
-      i: Int,
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      meets: Boolean
-  ): Unit =
-    val buffer = query.crossings
-    val n      =
-      if meets then Kernel.collect(world.shape(i), ox, oy, oz, dx, dy, dz, buffer, 0, false) else 0
-    if kept + n > keptT.length then
-      keptT = java.util.Arrays.copyOf(keptT, Math.max(kept + n, 2 * keptT.length))
-      keptLeaf = java.util.Arrays.copyOf(keptLeaf, keptT.length)
-    // Why: a copy out of the kernel's buffer, which the next shape's test overwrites.
-    var k = 0
-    while k < n do
-      keptT(kept + k) = buffer.tAt(k)
-      keptLeaf(kept + k) = buffer.leafAt(k)
-      k += 1
-    keptBy(i) = walks
-    next(i) = kept
-    last(i) = kept + n
-    kept += n
-
-  /** True when shape `i` is a clear shape whose crossings a walk keeps ([[Shadows.keeps]]). */
-  private def isClear(i: Int): Boolean = Shadows.keeps(world, i)
 
   /** As `world.occludedAlong` among the beam's shapes: some shape hit at 0 < t < `limit`. */
   private def blockedInBeam(
@@ -514,21 +423,3 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
 object Shadows:
   /** A beam's margin, as a share of the size of the coordinates compared. */
   val Margin: Double = 1e-7
-
-  /** True when a shadow ray's walk through an area light's beam keeps the crossings of shape `i`
-    * of `world` from its start: a shape whose [[Shape.distance]] is its first crossing
-    * ([[firstIsDistance]]: one of the general route) with some surface that lets light through.
-    */
-  private[render] def keeps(world: World, i: Int): Boolean =
-    firstIsDistance(world.shape(i)) &&
-      (0 until Shape.leafCount(world.shape(i))).exists(l => world.surface(i, l).transmit > 0)
-
-  /** True when [[Shape.distance]] of `shape` is the first of its [[Shape.crossings]] (not for a
-    * union, whose distance counts its inner surfaces too, nor for the shapes with a distance of
-    * their own).
-    */
-  private[render] def firstIsDistance(shape: Shape): Boolean = shape match
-    case p: Placed               => firstIsDistance(p.shape)
-    case c: Csg                  => c.operation != CsgOperation.Union
-    case _: (Box | Cone | Torus) => true
-    case _                       => false
