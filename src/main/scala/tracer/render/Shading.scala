@@ -220,7 +220,8 @@ final class Shading(world: World, mode: ShadingMode):
     val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
     if !behind then
       val share =
-        if light.area.isEmpty then shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
+        if light.area.isEmpty then
+          shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
         else shadows.areaFrom(s0x, s0y, s0z, k)
       if share > 0 then
         // Without fade the share is used as it is (the same bits as before version 4).
