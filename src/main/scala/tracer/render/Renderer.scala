@@ -149,10 +149,7 @@ object Renderer:
     private def encoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
       if n == 1 then
         // The common case: one sample a pixel, traced here (no loop in this method).
-        val o = projection.origin
-        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
-          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
-        )
+        centre(shading, x, y)
         store(x, at, out)(shading.r, shading.g, shading.b)
       else sampledEncoded(shading, x, y, at, out)
 
@@ -165,12 +162,18 @@ object Renderer:
     /** Pixel (x, y) of the picture as [[linearRow]] gives it, stored as (x, at) through `out`. */
     private def linear(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
       if n == 1 then
-        val o = projection.origin
-        projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
-          shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
-        )
+        centre(shading, x, y)
         out.put(x, at, shading.r, shading.g, shading.b)
       else samples(shading, x, y, inRange = false)((r, g, b) => out.put(x, at, r, g, b))
+
+    /** Traces the primary ray through the centre of pixel (x, y), its colour left in `shading`'s
+      * r, g and b (inline: the one-sample pixel's methods stay without a call or a loop).
+      */
+    private inline def centre(shading: Shading, x: Int, y: Int): Unit =
+      val o = projection.origin
+      projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
+        shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+      )
 
     /** Stores the pixel (r, g, b) as (x, at) through `out`, encoded as the picture's encoding
       * says.
