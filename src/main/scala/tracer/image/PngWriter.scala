@@ -3,7 +3,7 @@ package tracer.image
 import java.io.{ByteArrayOutputStream, DataOutputStream, OutputStream}
 import java.nio.charset.StandardCharsets.US_ASCII
 import java.util.concurrent.{Executors, ThreadFactory}
-import java.util.zip.{CRC32, Deflater, DeflaterOutputStream}
+import java.util.zip.{Adler32, CRC32, Deflater}
 
 /** A PNG encoder for 8-bit RGB images, written directly (PNG specification, ISO/IEC 15948).
   *
@@ -15,7 +15,12 @@ private[image] object PngWriter:
   private val Signature = Array[Byte](0x89.toByte, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n')
 
   /** Writes `bitmap` to `out` as an 8-bit RGB PNG, each row with the filter that compresses best. */
-  def write(bitmap: Bitmap, out: OutputStream): Unit =
+  def write(bitmap: Bitmap, out: OutputStream): Unit = write(bitmap, out, Workers)
+
+  /** Writes `bitmap` to `out` as [[write]] does, filtering and deflating on up to `workers` threads:
+    * the bytes are the same for any number.
+    */
+  private[image] def write(bitmap: Bitmap, out: OutputStream, workers: Int): Unit =
     val (w, h) = (bitmap.width, bitmap.height)
     out.write(Signature)
     // IHDR: size, 8 bits a sample, colour type 2 (RGB), deflate, adaptive filtering, no interlace.
@@ -23,35 +28,77 @@ private[image] object PngWriter:
       d.writeInt(w); d.writeInt(h); d.writeByte(8); d.writeByte(2); d.writeByte(0); d.writeByte(0);
       d.writeByte(0)
     }
-    val data     = ByteArrayOutputStream()
-    val deflater = Deflater(6)
-    val zip      = DeflaterOutputStream(data, deflater, 1 << 16)
-    // Perf: the rows are filtered in bands on worker threads while this thread deflates the bands
-    // already done, in order: the deflater sees the same bytes as one row at a time, so the file
-    // is the same bytes whatever the number of threads (docs/performance.md, round 8: a 960×540
-    // picture's filtering took 145 ms of its 190 ms, five passes a row in code still cold).
-    val bands = (h + BandRows - 1) / BandRows
-    if bands <= 1 then zip.write(filterBand(bitmap, 0, h))
+    // Perf: the picture is cut into bands of rows, each filtered and deflated on a worker thread
+    // (as pigz does), and this thread writes them in order, one IDAT chunk a band: the serial
+    // level-6 deflate took 0.8 s of a 3840×2160 run (docs/performance.md, rounds 10 and 11). A band
+    // depends only on the bitmap, so the file is the same bytes whatever the number of threads.
+    val bands                          = (h + BandRows - 1) / BandRows
+    val adler                          = Adler32()
+    def emit(b: Int, band: Band): Unit =
+      adler.update(band.filtered)
+      val head = if b == 0 then ZlibHeader else Array.emptyByteArray
+      val tail = if b == bands - 1 then checksum(adler) else Array.emptyByteArray
+      chunk(out, "IDAT") { d => d.write(head); d.write(band.deflated); d.write(tail) }
+    if bands <= 1 || workers <= 1 then (0 until bands).foreach(b => emit(b, encodeBand(bitmap, b)))
     else
-      val pool    = Executors.newFixedThreadPool(Math.min(Workers, bands), EncoderThreads)
-      val pending =
-        (0 until bands).map { b =>
-          val rows = b * BandRows until Math.min(h, (b + 1) * BandRows)
-          pool.submit(() => filterBand(bitmap, rows.start, rows.end))
-        }
-      try pending.foreach(band => zip.write(band.get()))
+      val pool    = Executors.newFixedThreadPool(Math.min(workers, bands), EncoderThreads)
+      val pending = (0 until bands).map(b => pool.submit(() => encodeBand(bitmap, b)))
+      try pending.indices.foreach(b => emit(b, pending(b).get()))
       finally pool.shutdownNow(): Unit
-    zip.finish()
-    deflater.end()
-    chunk(out, "IDAT")(_.write(data.toByteArray))
     chunk(out, "IEND")(_ => ())
     out.flush()
 
-  /** Rows a band holds: filtered on one worker, deflated in one write. */
+  /** Rows a band holds: filtered and deflated on one worker, written as one IDAT chunk. */
   private val BandRows = 32
 
-  /** The encoder's worker threads at most (the deflating thread is one more). */
+  /** The encoder's worker threads at most (the writing thread is one more). */
   private def Workers: Int = Runtime.getRuntime.availableProcessors
+
+  /** A band of rows: its filtered bytes (for the stream's checksum) and their deflated form. */
+  private final class Band(val filtered: Array[Byte], val deflated: Array[Byte])
+
+  /** A zlib stream's header: deflate with a 32 KiB window, the default level's flag, no preset
+    * dictionary (RFC 1950: `0x789c` is a multiple of 31).
+    */
+  private val ZlibHeader = Array[Byte](0x78, 0x9c.toByte)
+
+  /** The deflate window: a band's dictionary is the stream's last this many bytes before it. */
+  private val Window = 32768
+
+  /** Band `b` of `bitmap`, filtered, and deflated as the next piece of one raw deflate stream: the
+    * stream's preceding 32 KiB (the tail of the rows before, filtered again here) as its dictionary,
+    * ended by a sync flush (byte-aligned, so pieces join), or by the final block for the last band.
+    */
+  private def encodeBand(bitmap: Bitmap, b: Int): Band =
+    val from     = b * BandRows
+    val until    = Math.min(bitmap.height, from + BandRows)
+    val last     = until == bitmap.height
+    val filtered = filterBand(bitmap, from, until)
+    val deflater = Deflater(6, true)
+    if from > 0 then
+      // A row's filtered bytes depend only on it and the row above, so these are the stream's own.
+      val rows  = Math.min(from, (Window + 3 * bitmap.width) / (3 * bitmap.width + 1))
+      val tail  = filterBand(bitmap, from - rows, from)
+      val start = Math.max(0, tail.length - Window)
+      deflater.setDictionary(tail, start, tail.length - start)
+    deflater.setInput(filtered)
+    if last then deflater.finish()
+    val deflated = ByteArrayOutputStream(filtered.length / 4 + 64)
+    val buffer   = new Array[Byte](1 << 16)
+    // Why: the JDK's Deflater is driven in a loop until it has given every byte of the piece.
+    var more = true
+    while more do
+      val flush = if last then Deflater.NO_FLUSH else Deflater.SYNC_FLUSH
+      val n     = deflater.deflate(buffer, 0, buffer.length, flush)
+      deflated.write(buffer, 0, n)
+      more = if last then !deflater.finished() else n == buffer.length
+    deflater.end()
+    Band(filtered, deflated.toByteArray)
+
+  /** The stream's closing Adler-32 of the filtered bytes, most significant byte first. */
+  private def checksum(adler: Adler32): Array[Byte] =
+    val v = adler.getValue
+    Array((v >>> 24).toByte, (v >>> 16).toByte, (v >>> 8).toByte, v.toByte)
 
   /** Rows `from` until `until` of `bitmap` as 8-bit samples, each row its filter type's byte and
     * the row filtered with the filter whose bytes, taken as signed values, have the smallest sum of

@@ -1,0 +1,59 @@
+package tracer.image
+
+import java.io.ByteArrayOutputStream
+import munit.ScalaCheckSuite
+import org.scalacheck.{Gen, Prop}
+import org.scalacheck.Prop.forAll
+
+/** [[PngWriter]]'s banded encoding: pictures of many bands (each deflated on its own, with the rows
+  * before as its dictionary) decode to their pixels, here and in the JDK's image I/O, and the file
+  * is the same bytes for any number of encoder threads.
+  */
+class PngWriterProperties extends ScalaCheckSuite:
+
+  // Fewer tries than the default hundred: the widest pictures are a third of a megapixel.
+  override def scalaCheckTestParameters =
+    super.scalaCheckTestParameters.withMinSuccessfulTests(30)
+
+  /** A picture with repeats across rows and bands, so the deflater's matches reach back into the
+    * dictionary: a tiling of `tile` random colours, and some noise.
+    */
+  private def picture(w: Int, h: Int, seed: Long): Bitmap =
+    val random = scala.util.Random(seed)
+    val period = 1 + random.nextInt(40)
+    val tile   =
+      Array.fill(period)(Colour(random.nextDouble(), random.nextDouble(), random.nextDouble()))
+    val noise = random.nextDouble()
+    Bitmap.tabulate(w, h, 255) { (x, y) =>
+      val c = tile((x + 7 * y) % period)
+      if random.nextDouble() < noise then Colour(random.nextDouble(), c.g, c.b) else c
+    }
+
+  private def encoded(bitmap: Bitmap, workers: Int): Array[Byte] =
+    val out = ByteArrayOutputStream()
+    PngWriter.write(bitmap, out, workers)
+    out.toByteArray
+
+  // Widths from one pixel (a band far smaller than the 32 KiB window) to wider than the window.
+  private val sizes = for
+    w <- Gen.oneOf(Gen.choose(1, 40), Gen.choose(300, 400), Gen.choose(10900, 11100))
+    h <- Gen.choose(33, 100)
+  yield (w, h)
+
+  property("many bands: decoded here and by image I/O to the picture written") {
+    forAll(sizes, Gen.long) { case ((w, h), seed) =>
+      val bitmap = picture(w, h, seed)
+      val bytes  = encoded(bitmap, 2)
+      val ours   = Png.read(bytes)
+      Prop(ours == Right(bitmap)) :| s"$w×$h decoded here differently" &&
+      Prop(Png.readWithImageIo(bytes) == ours) :| "image I/O disagrees"
+    }
+  }
+
+  property("the same bytes for one, two or five encoder threads") {
+    forAll(sizes, Gen.long) { case ((w, h), seed) =>
+      val bitmap = picture(w, h, seed)
+      val one    = encoded(bitmap, 1)
+      Prop(encoded(bitmap, 2).sameElements(one)) && Prop(encoded(bitmap, 5).sameElements(one))
+    }
+  }
