@@ -57,3 +57,39 @@ class PngWriterProperties extends ScalaCheckSuite:
       Prop(encoded(bitmap, 2).sameElements(one)) && Prop(encoded(bitmap, 5).sameElements(one))
     }
   }
+
+  /** Filter type `filter` of byte `i` of `row` as the PNG specification (§9.2) defines it: the
+    * byte less its predictor, from the neighbours left (`a`), above (`b`) and above left (`c`),
+    * each 0 beyond the row's start.
+    */
+  private def specified(filter: Int, row: Array[Byte], above: Array[Byte], i: Int): Byte =
+    val x         = row(i) & 0xff
+    val a         = if i >= 3 then row(i - 3) & 0xff else 0
+    val b         = above(i) & 0xff
+    val c         = if i >= 3 then above(i - 3) & 0xff else 0
+    val p         = a + b - c
+    val predicted = filter match
+      case 0 => 0
+      case 1 => a
+      case 2 => b
+      case 3 => (a + b) / 2
+      case _ =>
+        if Math.abs(p - a) <= Math.abs(p - b) && Math.abs(p - a) <= Math.abs(p - c) then a
+        else if Math.abs(p - b) <= Math.abs(p - c) then b
+        else c
+    (x - predicted).toByte
+
+  property("each filter writes the bytes the PNG specification defines, the first pixel's too") {
+    val rows = for
+      n     <- Gen.choose(1, 40).map(3 * _)
+      row   <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
+      above <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
+    yield (row.toArray, above.toArray)
+    forAll(rows, Gen.choose(0, 4), Gen.choose(0, 5)) { case ((row, above), filter, at) =>
+      val out = Array.fill[Byte](at + row.length + 2)(7)
+      PngWriter.applyFilter(filter, row, above, out, at)
+      val expected = Array.fill[Byte](at)(7) ++ row.indices.map(specified(filter, row, above, _)) ++
+        Array.fill[Byte](2)(7)
+      Prop(out.sameElements(expected)) :| s"filter $filter"
+    }
+  }
