@@ -32,9 +32,13 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   // gallery's materials and solids: three quarters of the render in the shadow walk; round 7).
   private val beam   = new Array[Int](if beams && world.beams then world.size else 0)
   private var inBeam = -1
-  private val axes   = new Array[Double](21)
-  private val low    = new Array[Double](7)
-  private val high   = new Array[Double](7)
+  // Perf: no shape in the beam lets light through, so its shadow rays need only know whether
+  // anything blocks them: the first blocker found ends a ray, as in a world without glass (a
+  // walk would stop at the nearest opaque hit with the same share, 0; docs/performance.md, round 12).
+  private var opaqueBeam = true
+  private val axes       = new Array[Double](21)
+  private val low        = new Array[Double](7)
+  private val high       = new Array[Double](7)
   // Perf: the last blocker first. A point light's shadow rays from neighbouring points of a row
   // are mostly blocked by the same shape, so the primitive that blocked the last one from the
   // same light and depth (mod Shadows.Depths: a mirror's points shoot theirs between two of a
@@ -166,7 +170,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       reach: Double
   ): Double =
     if inBeam >= 0 then
-      if !world.transmits then if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
+      if opaqueBeam then if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
       else walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
     else if !world.transmits then
       if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
@@ -357,14 +361,17 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       low(a) = lo
       high(a) = hi
       a += 1
-    var count = 0
-    var i     = 0
+    var count  = 0
+    var opaque = true
+    var i      = 0
     while i < world.size do
       if mayMeet(i, fx, fy, fz, positions, scale) then
         beam(count) = i
         count += 1
+        opaque = opaque && !world.letsThrough(i)
       i += 1
     inBeam = count
+    opaqueBeam = opaque
 
   /** Axis `a` of the beam: (x, y, z). */
   private inline def axis(a: Int, x: Double, y: Double, z: Double): Unit =

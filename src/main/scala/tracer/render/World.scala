@@ -48,8 +48,14 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   val largestAreaLight: Int =
     lights.iterator.flatMap(_.area).map(a => a.samplesA * a.samplesB).maxOption.getOrElse(0)
 
+  // Which shapes show a surface that lets light through.
+  private val letThrough: Array[Boolean] = objects.map(_.surfaces.exists(_.transmit > 0))
+
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
-  val transmits: Boolean = objects.exists(_.surfaces.exists(_.transmit > 0))
+  val transmits: Boolean = letThrough.contains(true)
+
+  /** True when shape `i` shows a surface that lets light through (its `transmit` above 0). */
+  def letsThrough(i: Int): Boolean = letThrough(i)
 
   /** True when the shadow rays of an area light test the few shapes its beam may meet
     * ([[Shadows]]): a world of at most [[World.BeamShapes]] shapes with an area light.

@@ -76,12 +76,14 @@ class ShadowProperties extends ScalaCheckSuite:
       if a.cross(b).normalised.isDefined
     yield Light(at * 1.5, area = Some(AreaLight(a, b, na, nb)))
 
-  private def worldGen(objects: Gen[SceneObject]): Gen[World] =
+  private def worldGen(objects: Gen[SceneObject], more: List[SceneObject] = Nil): Gen[World] =
     for
       n      <- Gen.choose(1, 40)
       shapes <- Gen.listOfN(n, objects)
       light  <- areaLight
-    yield World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), lights = List(light), objects = shapes))
+    yield World(
+      Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), lights = List(light), objects = shapes ++ more)
+    )
 
   private val opaque: Gen[SceneObject] = shape.map(SceneObject(_))
 
@@ -107,6 +109,15 @@ class ShadowProperties extends ScalaCheckSuite:
   property("an area light's share in an opaque world: the tree's, bit for bit"):
     forAll(worldGen(opaque), Gen.listOfN(40, from)) { (w, points) =>
       assert(w.beams && !w.transmits)
+      agree(w, points)
+    }
+
+  property("a transmitting world whose glass lies outside the beam: the tree's, bit for bit"):
+    // The clear sphere is far from every point and light, so each beam is opaque (the any-hit
+    // route) while the world itself transmits.
+    val glass = SceneObject(Sphere(Vec3(200, 200, 200), 1), Surface(transmit = 0.9))
+    forAll(worldGen(opaque, List(glass)), Gen.listOfN(40, from)) { (w, points) =>
+      assert(w.beams && w.transmits)
       agree(w, points)
     }
 
