@@ -101,7 +101,7 @@ object Main:
           else Right(Renderer.render(scene, config, threads, onRow, band))
         )
       )
-      _ <- picture.fold(Images.save(_, output), Images.save(_, output)).left.map(failure)
+      _ <- picture.fold(Images.save(_, output), Images.save(_, output, threads)).left.map(failure)
     yield millis
 
   /** Refuses `-g` (any value, even 1) with a floating-point output: `.pfm` and `.exr` hold the

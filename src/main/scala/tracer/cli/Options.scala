@@ -246,7 +246,7 @@ object Options:
         .valueName("n")
         .validate(atLeast("-p", 1))
         .action((v, o) => o.copy(threads = Some(v)))
-        .text("render with n threads (default: the number of processors)"),
+        .text("render (and encode a PNG) with n threads (default: the number of processors)"),
       opt[Double]('z', "zoom")
         .valueName("zoom")
         .validate(positiveDouble("-z"))

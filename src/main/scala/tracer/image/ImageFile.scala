@@ -60,11 +60,16 @@ object ImageFile:
       (bytes.length >= 4 && bytes.take(4).sameElements(Exr.Magic))
 
   /** Writes `bitmap` to `out` in `format` (binary P6 for PPM), which must not be a
-    * floating-point format.
+    * floating-point format; a PNG is encoded on up to `threads` threads.
     */
-  def write(bitmap: Bitmap, format: ImageFormat, out: OutputStream): Unit = format match
+  def write(
+      bitmap: Bitmap,
+      format: ImageFormat,
+      out: OutputStream,
+      threads: Int = Png.defaultThreads
+  ): Unit = format match
     case ImageFormat.Ppm                   => Ppm.write(bitmap, out, PpmFormat.Binary)
-    case ImageFormat.Png                   => Png.write(bitmap, out)
+    case ImageFormat.Png                   => Png.write(bitmap, out, threads)
     case ImageFormat.Pfm | ImageFormat.Exr =>
       // Why: a caller's bug: every caller chooses the raster writer for these formats.
       throw IllegalArgumentException(s"$format holds floats: write a Raster")

@@ -9,8 +9,14 @@ import javax.imageio.ImageIO
   */
 object Png:
 
-  /** Writes `bitmap` as an 8-bit RGB PNG (deeper bitmaps are scaled to 8 bits). */
-  def write(bitmap: Bitmap, out: OutputStream): Unit = PngWriter.write(bitmap, out)
+  /** Writes `bitmap` as an 8-bit RGB PNG (deeper bitmaps are scaled to 8 bits), encoding it on up
+    * to `threads` threads (the same bytes for any number; one by default on a one-processor machine).
+    */
+  def write(bitmap: Bitmap, out: OutputStream, threads: Int = Png.defaultThreads): Unit =
+    PngWriter.write(bitmap, out, threads)
+
+  /** The encoder's threads when none are asked for: one a processor. */
+  def defaultThreads: Int = Runtime.getRuntime.availableProcessors
 
   /** The bytes of `bitmap` as a PNG file. */
   def encode(bitmap: Bitmap): Array[Byte] =

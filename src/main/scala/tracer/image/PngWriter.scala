@@ -14,13 +14,11 @@ private[image] object PngWriter:
 
   private val Signature = Array[Byte](0x89.toByte, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n')
 
-  /** Writes `bitmap` to `out` as an 8-bit RGB PNG, each row with the filter that compresses best. */
-  def write(bitmap: Bitmap, out: OutputStream): Unit = write(bitmap, out, Workers)
-
-  /** Writes `bitmap` to `out` as [[write]] does, filtering and deflating on up to `workers` threads:
-    * the bytes are the same for any number.
+  /** Writes `bitmap` to `out` as an 8-bit RGB PNG, each row with the filter that compresses best,
+    * filtering and deflating on up to `workers` threads besides this one (none for 1: this thread
+    * does it all); the bytes are the same for any number.
     */
-  private[image] def write(bitmap: Bitmap, out: OutputStream, workers: Int): Unit =
+  def write(bitmap: Bitmap, out: OutputStream, workers: Int): Unit =
     val (w, h) = (bitmap.width, bitmap.height)
     out.write(Signature)
     // IHDR: size, 8 bits a sample, colour type 2 (RGB), deflate, adaptive filtering, no interlace.
@@ -50,9 +48,6 @@ private[image] object PngWriter:
 
   /** Rows a band holds: filtered and deflated on one worker, written as one IDAT chunk. */
   private val BandRows = 32
-
-  /** The encoder's worker threads at most (the writing thread is one more). */
-  private def Workers: Int = Runtime.getRuntime.availableProcessors
 
   /** A band of rows: its filtered bytes (for the stream's checksum) and their deflated form. */
   private final class Band(val filtered: Array[Byte], val deflated: Array[Byte])

@@ -1,7 +1,7 @@
 package tracer.io
 
 import java.nio.file.Path
-import tracer.image.{Bitmap, ImageFile, Raster}
+import tracer.image.{Bitmap, ImageFile, Png, Raster}
 
 /** Image files by name, for the command line and the REPL. */
 object Images:
@@ -11,11 +11,17 @@ object Images:
     */
   def save(bitmap: Bitmap, name: String): Either[String, Unit] = save(bitmap, Path.of(name))
 
-  /** Writes `bitmap` to `path`, its format chosen by the file name as in [[save(bitmap:*]]. */
-  def save(bitmap: Bitmap, path: Path): Either[String, Unit] =
+  /** Writes `bitmap` to `path`, its format chosen by the file name as in [[save(bitmap:*]], a PNG
+    * encoded on up to `threads` threads (`-p`: the render's).
+    */
+  def save(
+      bitmap: Bitmap,
+      path: Path,
+      threads: Int = Png.defaultThreads
+  ): Either[String, Unit] =
     val format = ImageFile.formatFor(path.getFileName.toString)
     if format.isFloat then Left(s"cannot write '$path': a $format file holds floats, not samples")
-    else OutputFile.write(path)(ImageFile.write(bitmap, format, _))
+    else OutputFile.write(path)(ImageFile.write(bitmap, format, _, threads))
 
   /** Writes `raster` to `path` — Portable FloatMap for `.pfm`, OpenEXR for `.exr` (any case) —
     * whole or not at all; any other name is refused.
