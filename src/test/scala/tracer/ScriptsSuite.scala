@@ -185,6 +185,25 @@ class ScriptsSuite extends MovieWorkspace:
     assert(!e.out.contains("Total") && !Files.exists(d.resolve("bad.mp4")), e.out)
     assertEquals(times(d.resolve("bad-frames")).length, 0)
 
+  workspace.test(
+    "ab.sh times each jar on the scene, alternating, and keeps the pictures asked for"
+  ): d =>
+    val scene = Files.writeString(d.resolve("red.xml"), this.scene(colours(0)))
+    // The project's jar, built by the tracer script if need be.
+    assertEquals(run(List(home.resolve("tracer").toString, "--version")).status, 0)
+    val jar  = home.resolve("target/scala-3.8.3/tracer.jar").toString
+    val kept = d.resolve("kept")
+    val e    = run(
+      List("bash", "scripts/ab.sh", "--runs", "2", "--frames", "3", "--keep", kept.toString) ++
+        List(scene.toString, jar, jar, "--", "-x", "9", "-y", "7")
+    )
+    assertEquals(e.status, 0, e.err)
+    // A line a jar, a figure a run.
+    assertEquals(e.out.linesIterator.count(_.matches(s"\\Q$jar\\E: \\d+ \\d+")), 2, e.out)
+    val pictures = for i <- 0 to 1; f <- 1 to 3 yield Files.readAllBytes(kept.resolve(s"$i-$f.png"))
+    assert(pictures.forall(_.sameElements(pictures(0))))
+    assertEquals(run(List("bash", "scripts/ab.sh", scene.toString)).status, 2)
+
   test("movie.sh refuses bad arguments with status 2"):
     assertEquals(run(List(movie.toString)).status, 2)
     assertEquals(run(List(movie.toString, "/no/such/tracer", "frames.txt")).status, 2)
