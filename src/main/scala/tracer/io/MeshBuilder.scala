@@ -48,19 +48,12 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
     val out = new Array[Int](obj.faceCount)
     // Why: the number of proper faces found so far.
     var n = 0
-    // Perf: Triangle.isProper's arithmetic ((T1 − T0) × (T2 − T0), its length finite and
-    // positive) on plain doubles in a counted loop: no Vec3 or Option per face (a sixth of the
-    // 1.3M-face mesh's reading; docs/performance.md, round 7).
+    // Perf: Triangle.isProper's test on plain doubles (Mesh.isProperFace) in a counted loop: no
+    // Vec3 or Option per face (a sixth of the 1.3M-face mesh's reading; docs/performance.md,
+    // round 7).
     var f = 0
     while f < obj.faceCount do
-      val i0  = 3 * c(3 * f); val i1                = 3 * c(3 * f + 1); val i2  = 3 * c(3 * f + 2)
-      val ax  = vertices(i1) - vertices(i0); val ay = vertices(i1 + 1) - vertices(i0 + 1)
-      val az  = vertices(i1 + 2) - vertices(i0 + 2)
-      val bx  = vertices(i2) - vertices(i0); val by = vertices(i2 + 1) - vertices(i0 + 1)
-      val bz  = vertices(i2 + 2) - vertices(i0 + 2)
-      val cx  = ay * bz - az * by; val cy           = az * bx - ax * bz; val cz = ax * by - ay * bx
-      val len = Math.sqrt(cx * cx + cy * cy + cz * cz)
-      if len > 0 && len < Double.PositiveInfinity then
+      if Mesh.isProperFace(vertices, c, f) then
         out(n) = f
         n += 1
       f += 1
