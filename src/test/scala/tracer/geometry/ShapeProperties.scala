@@ -200,3 +200,17 @@ class ShapeProperties extends ScalaCheckSuite:
 
   property("distance is never NaN for finite inputs"):
     forAll(shape, vec, unitVec)((s, o, d) => !Shape.distance(s, Ray(o, d)).isNaN)
+
+  property("a mesh face is proper exactly when the triangle of its corners is"):
+    // Whole coordinates on a small grid make collinear and repeated corners common.
+    val corner = Gen.zip(Gen.choose(-2, 2), Gen.choose(-2, 2), Gen.choose(-2, 2))
+    val far    = Gen.oneOf(1.0, 1e-160, 1e160)
+    forAll(Gen.listOfN(3, corner), far) { (corners, scale) =>
+      val points   = corners.map((x, y, z) => Vec3(x, y, z) * scale)
+      val vertices = IArray.from(points.flatMap(p => List(p.x, p.y, p.z)))
+      Mesh.isProperFace(vertices, IArray(0, 1, 2), 0) == Triangle.isProper(
+        points(0),
+        points(1),
+        points(2)
+      )
+    }
