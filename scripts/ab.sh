@@ -17,10 +17,10 @@ set -euo pipefail
 runs=3 frames=4 threads=1 keep=
 while [ $# -gt 0 ]; do
   case "$1" in
-    --runs) runs=$2; shift 2 ;;
-    --frames) frames=$2; shift 2 ;;
-    --threads) threads=$2; shift 2 ;;
-    --keep) keep=$2; shift 2 ;;
+    --runs) runs=${2:-}; shift $(( $# > 1 ? 2 : 1 )) ;;
+    --frames) frames=${2:-}; shift $(( $# > 1 ? 2 : 1 )) ;;
+    --threads) threads=${2:-}; shift $(( $# > 1 ? 2 : 1 )) ;;
+    --keep) keep=${2:-}; shift $(( $# > 1 ? 2 : 1 )) ;;
     *) break ;;
   esac
 done
@@ -28,13 +28,16 @@ if [ $# -lt 2 ]; then
   echo "usage: ab.sh [--runs N] [--frames N] [--threads N] [--keep DIR] SCENE.xml JAR... [-- OPTIONS...]" >&2
   exit 2
 fi
+for n in "$runs" "$frames" "$threads"; do
+  case "$n" in '' | *[!0-9]*) echo "ab.sh: --runs, --frames and --threads take whole numbers" >&2; exit 2 ;; esac
+done
+(( frames >= 2 && runs >= 1 && threads >= 1 )) || { echo "ab.sh: needs --frames ≥ 2, --runs ≥ 1, --threads ≥ 1" >&2; exit 2; }
 scene=$1; shift
 jars=()
 while [ $# -gt 0 ] && [ "$1" != -- ]; do jars+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 [ -f "$scene" ] || { echo "ab.sh: no scene '$scene'" >&2; exit 1; }
 for jar in "${jars[@]}"; do [ -f "$jar" ] || { echo "ab.sh: no jar '$jar'" >&2; exit 1; }; done
-(( frames >= 2 )) || { echo "ab.sh: --frames must be at least 2" >&2; exit 2; }
 
 java=${JAVA:-java}
 flags=(-Xss8m -XX:+UseSerialGC)
@@ -53,9 +56,12 @@ for ((r = 1; r <= runs; r++)); do
     list=$work/list-$i
     : >"$list"
     for ((f = 1; f <= frames; f++)); do printf '%s\t%s\n' "$scene" "$out/$i-$f.png" >>"$list"; done
-    best=$("$java" "${flags[@]}" -jar "${jars[$i]}" -t -p "$threads" "$@" --batch "$list" |
-      sed -n 's/^Tracetime: \([0-9]*\) ms.*/\1/p' | tail -n +2 | sort -n | head -1)
-    figures[$i]="${figures[$i]:-} ${best:-?}"
+    times=$("$java" "${flags[@]}" -jar "${jars[$i]}" -t -p "$threads" "$@" --batch "$list") || {
+      echo "ab.sh: ${jars[$i]} failed on $scene" >&2
+      exit 1
+    }
+    best=$(printf '%s\n' "$times" | sed -n 's/^Tracetime: \([0-9]*\) ms.*/\1/p' | tail -n +2 | sort -n | head -1)
+    figures[$i]="${figures[$i]:-} $best"
   done
 done
 for i in "${!jars[@]}"; do

@@ -203,6 +203,11 @@ class ScriptsSuite extends MovieWorkspace:
     val pictures = for i <- 0 to 1; f <- 1 to 3 yield Files.readAllBytes(kept.resolve(s"$i-$f.png"))
     assert(pictures.forall(_.sameElements(pictures(0))))
     assertEquals(run(List("bash", "scripts/ab.sh", scene.toString)).status, 2)
+    assertEquals(run(List("bash", "scripts/ab.sh", "--runs", "x", scene.toString, jar)).status, 2)
+    // A render the tracer refuses: its own message, then one line naming the jar.
+    val refused = run(List("bash", "scripts/ab.sh", scene.toString, jar, "--", "-x", "0"))
+    assertEquals(refused.status, 1)
+    assert(refused.err.contains(s"ab.sh: $jar failed"), refused.err)
 
   test("movie.sh refuses bad arguments with status 2"):
     assertEquals(run(List(movie.toString)).status, 2)

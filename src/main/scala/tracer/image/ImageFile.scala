@@ -62,17 +62,13 @@ object ImageFile:
   /** Writes `bitmap` to `out` in `format` (binary P6 for PPM), which must not be a
     * floating-point format; a PNG is encoded on up to `threads` threads.
     */
-  def write(
-      bitmap: Bitmap,
-      format: ImageFormat,
-      out: OutputStream,
-      threads: Int = Png.defaultThreads
-  ): Unit = format match
-    case ImageFormat.Ppm                   => Ppm.write(bitmap, out, PpmFormat.Binary)
-    case ImageFormat.Png                   => Png.write(bitmap, out, threads)
-    case ImageFormat.Pfm | ImageFormat.Exr =>
-      // Why: a caller's bug: every caller chooses the raster writer for these formats.
-      throw IllegalArgumentException(s"$format holds floats: write a Raster")
+  def write(bitmap: Bitmap, format: ImageFormat, out: OutputStream, threads: Int): Unit =
+    format match
+      case ImageFormat.Ppm                   => Ppm.write(bitmap, out, PpmFormat.Binary)
+      case ImageFormat.Png                   => Png.write(bitmap, out, threads)
+      case ImageFormat.Pfm | ImageFormat.Exr =>
+        // Why: a caller's bug: every caller chooses the raster writer for these formats.
+        throw IllegalArgumentException(s"$format holds floats: write a Raster")
 
   /** Writes `raster` to `out` in the floating-point `format` (PFM or OpenEXR). */
   def write(raster: Raster, format: ImageFormat, out: OutputStream): Unit = format match

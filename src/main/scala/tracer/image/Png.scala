@@ -10,18 +10,20 @@ import javax.imageio.ImageIO
 object Png:
 
   /** Writes `bitmap` as an 8-bit RGB PNG (deeper bitmaps are scaled to 8 bits), encoding it on up
-    * to `threads` threads (the same bytes for any number; one by default on a one-processor machine).
+    * to `threads` threads (the same bytes for any number).
     */
-  def write(bitmap: Bitmap, out: OutputStream, threads: Int = Png.defaultThreads): Unit =
+  def write(bitmap: Bitmap, out: OutputStream, threads: Int): Unit =
     PngWriter.write(bitmap, out, threads)
 
-  /** The encoder's threads when none are asked for: one a processor. */
+  /** The encoder's threads when the caller names none ([[encode]], `Images.save`): one a
+    * processor.
+    */
   def defaultThreads: Int = Runtime.getRuntime.availableProcessors
 
   /** The bytes of `bitmap` as a PNG file. */
   def encode(bitmap: Bitmap): Array[Byte] =
     val out = ByteArrayOutputStream()
-    write(bitmap, out)
+    write(bitmap, out, defaultThreads)
     out.toByteArray
 
   /** Decodes a PNG: 16-bit images keep their depth (maxval 65535), others become 8-bit RGB;
