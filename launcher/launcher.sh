@@ -85,33 +85,35 @@ tracer_choose_java() {
   local real=() best='' best_feature=0 unknown='' i home version feature line
   # One readlink for all: each candidate's real path, where its release file is.
   while IFS= read -r line; do real+=("$line"); done < <(readlink -f -- "${candidates[@]}" 2>/dev/null)
+  local best_real='' unknown_real=''
   for i in "${!candidates[@]}"; do
     home=${real[$i]:-${candidates[$i]}}
     home=${home%/bin/java}
     if version=$(tracer_release_version "$home"); then
       feature=$(tracer_feature "$version")
       if [ "$feature" -ge "$tracer_min_java" ] && [ "$feature" -gt "$best_feature" ]; then
-        best=${candidates[$i]} best_feature=$feature
+        best=${candidates[$i]} best_real=${real[$i]:-} best_feature=$feature
       fi
     elif [ -z "$unknown" ]; then
-      unknown=${candidates[$i]}
+      unknown=${candidates[$i]} unknown_real=${real[$i]:-}
     fi
   done
   if [ -n "$best" ]; then
-    tracer_take_java "$best"
+    tracer_take_java "$best" "$best_real"
   elif [ -n "$unknown" ]; then
-    tracer_take_java "$unknown"
+    tracer_take_java "$unknown" "$unknown_real"
   else
     echo "tracer: needs Java $tracer_min_java or newer; found only older ones (set TRACER_JAVA to a newer one)" >&2
     return 1
   fi
 }
 
-# tracer_take_java JAVA: sets tracer_java and what is known of its version.
+# tracer_take_java JAVA [REAL]: sets tracer_java and what is known of its version; REAL is JAVA's
+# real path when the caller has it already (else it is looked up).
 tracer_take_java() {
-  local real
+  local real=${2:-}
   tracer_java=$1
-  real=$(readlink -f -- "$1" 2>/dev/null) || real=$1
+  if [ -z "$real" ]; then real=$(readlink -f -- "$1" 2>/dev/null) || real=$1; fi
   tracer_java_home=${real%/bin/java}
   if tracer_java_version=$(tracer_release_version "$tracer_java_home"); then
     tracer_java_feature=$(tracer_feature "$tracer_java_version")
@@ -128,22 +130,30 @@ tracer_java_flags() {
   if [ "$tracer_java_feature" -ge 23 ]; then tracer_flags+=(--sun-misc-unsafe-memory-access=allow); fi
 }
 
-# tracer_cksum TEXT: a short stable number for TEXT (POSIX cksum), for file names.
-tracer_cksum() {
-  local sum
-  sum=$(printf '%s' "$1" | cksum)
-  printf '%s\n' "${sum%% *}"
+# tracer_cksums TEXT...: sets tracer_sums to a short stable number (POSIX cksum) for each of one
+# to three TEXTs, for file names: one cksum process for all (each TEXT a here-string on a file
+# descriptor, so no subshell is started either).
+tracer_cksums() {
+  local out line
+  tracer_sums=()
+  case $# in
+    1) out=$(cksum /dev/fd/3 3<<<"$1") ;;
+    2) out=$(cksum /dev/fd/3 /dev/fd/4 3<<<"$1" 4<<<"$2") ;;
+    *) out=$(cksum /dev/fd/3 /dev/fd/4 /dev/fd/5 3<<<"$1" 4<<<"$2" 5<<<"$3") ;;
+  esac || return 1
+  while IFS=' ' read -r line _; do tracer_sums+=("$line"); done <<<"$out"
 }
 
-# tracer_cache_dirs JAR: prints the directories where the cache may live, best first: beside the
-# jar, then the user's cache directory (XDG_CACHE_HOME, else ~/.cache), under a name of its own
-# for each installed jar.
-tracer_cache_dirs() {
-  local jar_dir user
-  jar_dir=$(cd -P "$(dirname "$1")" && pwd) || return 0
-  printf '%s\n' "$jar_dir"
-  user=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
-  if [ -n "$user" ]; then printf '%s\n' "$user/tracer/jar-$(tracer_cksum "$jar_dir/$(basename "$1")")"; fi
+# tracer_jar_dir JAR: sets tracer_jar_dir, the absolute directory of JAR (as the path names it).
+tracer_jar_dir() {
+  case "$1" in
+    */*) tracer_jar_dir=${1%/*} ;;
+    *) tracer_jar_dir=. ;;
+  esac
+  case "$tracer_jar_dir" in
+    /*) ;;
+    *) tracer_jar_dir=$PWD/$tracer_jar_dir ;;
+  esac
 }
 
 # tracer_cache JAR TRAINING_DIR...: sets tracer_cache_flags, the JVM options that use the
@@ -164,12 +174,30 @@ tracer_cache() {
   [ "$tracer_java_feature" -ge "$tracer_min_java" ] || return 0
   local kind=jsa
   if [ "$tracer_java_feature" -ge 25 ] && [ "${TRACER_CACHE:-auto}" != cds ]; then kind=aot; fi
-  local stamp key name dir file
-  stamp=$(stat -L -c '%s-%Y' -- "$jar" 2>/dev/null) || return 0
-  key=$(tracer_cksum "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}")
-  name="tracer-java$tracer_java_version-$key-jar$stamp-training$(tracer_training_stamp "$@").$kind"
-  local dirs=() line
-  while IFS= read -r line; do dirs+=("$line"); done < <(tracer_cache_dirs "$jar")
+  # Perf: one stat for the jar and every training scene, one cksum for the three numbers of the
+  # name: a process costs 1 to 2 ms, and every render starts here (docs/performance.md, round 13).
+  local files=("$jar") entry training dir file listing stamp user
+  for dir in "$@"; do
+    for entry in "$dir"/*.xml "$dir"/path/*.xml; do
+      if [ -e "$entry" ]; then files+=("$entry"); fi
+    done
+  done
+  listing=$(stat -L -c '%s %Y %n' -- "${files[@]}" 2>/dev/null) || true
+  # The jar's line comes first: its size and time, then the training scenes' lines.
+  stamp=${listing%%$'\n'*}
+  [ "${stamp% "$jar"}" != "$stamp" ] || return 0
+  stamp=${stamp% "$jar"}
+  stamp=${stamp/ /-}
+  training=''
+  case "$listing" in *$'\n'*) training=${listing#*$'\n'} ;; esac
+  tracer_jar_dir "$jar"
+  local dirs=("$tracer_jar_dir")
+  user=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
+  tracer_cksums "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}" "$training" \
+    "$tracer_jar_dir/${jar##*/}" || return 0
+  local name="tracer-java$tracer_java_version-${tracer_sums[0]}-jar$stamp-training${tracer_sums[1]}.$kind"
+  # Beside the jar, then in the user's cache directory under a name of its own for each jar.
+  if [ -n "$user" ]; then dirs+=("$user/tracer/jar-${tracer_sums[2]}"); fi
   # A cache already made in any of the places is used as it is.
   for dir in ${dirs[@]+"${dirs[@]}"}; do
     if [ -f "$dir/$name" ]; then
@@ -187,16 +215,6 @@ tracer_cache() {
       return 0
     fi
   done
-}
-
-# tracer_training_stamp TRAINING_DIR...: a short number for the training scenes (each one's path,
-# size and time), so that changed training scenes make a new cache as a changed jar does.
-tracer_training_stamp() {
-  local dir listing=''
-  for dir in "$@"; do
-    listing+=$(stat -L -c '%n %s %Y' -- "$dir"/*.xml "$dir"/path/*.xml 2>/dev/null)
-  done
-  tracer_cksum "$listing"
 }
 
 # tracer_cache_use KIND FILE: sets tracer_cache_flags to use FILE quietly, if it can be used.
