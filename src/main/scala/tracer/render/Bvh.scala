@@ -13,14 +13,8 @@ import tracer.geometry.{Mesh, Shape}
   * @param shapes the shapes it indexes; those without bounds (planes) are left out
   * @param pool   where to build it and its meshes' trees: the render's threads, or the calling
   *   thread for `None`
-  * @param flatLimit the most primitives it tests one after another instead of walking its tree
-  *   (see [[flat]]; tests set 0 to walk every tree)
   */
-final class Bvh(
-    shapes: IndexedSeq[Shape],
-    pool: Option[ExecutionContext] = None,
-    flatLimit: Int = Bvh.FlatLimit
-):
+final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None):
   private val tree  = BvhBuilder(shapes).build(pool)
   private val boxes = tree.boxes
   private val links = tree.links
@@ -32,15 +26,6 @@ final class Bvh(
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
-
-  /** True when the queries test the primitives one after another rather than walk the tree: at
-    * most `flatLimit` of them, each a sphere, a triangle or a mesh (whose own tree culls), which
-    * cost less to test than the boxes above them (docs/performance.md, round 13).
-    */
-  val flat: Boolean =
-    prims.size <= flatLimit && (0 until prims.size).forall(k =>
-      prims.kind(k) != Route.General.ordinal.toByte
-    )
 
   /** The indices, in order, of the shapes left out of the hierarchy for having no bounds. */
   val unbounded: Array[Int] = tree.unbounded
@@ -64,53 +49,6 @@ final class Bvh(
     * hit in `query.face`.
     */
   def nearest(
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      limitIndex: Int,
-      query: Query
-  ): Int =
-    if flat then nearestFlat(ox, oy, oz, dx, dy, dz, limit, limitIndex, query)
-    else nearestWide(ox, oy, oz, dx, dy, dz, limit, limitIndex, query)
-
-  /** [[nearest]] shape by shape, for a [[flat]] hierarchy. */
-  private def nearestFlat(
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      limitIndex: Int,
-      query: Query
-  ): Int =
-    // Perf: a plain loop over the few primitives, the leaves' test and rule: a small method, which
-    // the JIT compiles in a few milliseconds where the walk takes it a hundred (docs/performance.md,
-    // round 13).
-    var best  = limitIndex
-    var bestT = limit
-    var face  = -1
-    var k     = 0
-    while k < prims.size do
-      val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
-      if t <= bestT && t < Double.PositiveInfinity then
-        val i = prims.index(k)
-        if t < bestT || i < best then
-          bestT = t
-          best = i
-          face = query.meshFace
-      k += 1
-    query.distance = bestT
-    query.face = face
-    best
-
-  /** [[nearest]] down the wide tree. */
-  private def nearestWide(
       ox: Double,
       oy: Double,
       oz: Double,
@@ -180,40 +118,6 @@ final class Bvh(
     * below `limit`; stops at the first.
     */
   def occluded(
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      query: Query
-  ): Boolean =
-    if flat then occludedFlat(ox, oy, oz, dx, dy, dz, limit, query)
-    else occludedWide(ox, oy, oz, dx, dy, dz, limit, query)
-
-  /** [[occluded]] shape by shape, for a [[flat]] hierarchy. */
-  private def occludedFlat(
-      ox: Double,
-      oy: Double,
-      oz: Double,
-      dx: Double,
-      dy: Double,
-      dz: Double,
-      limit: Double,
-      query: Query
-  ): Boolean =
-    // Perf: as nearestFlat.
-    var hit = false
-    var k   = 0
-    while k < prims.size && !hit do
-      hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
-      k += 1
-    if hit then query.blocker = k - 1
-    hit
-
-  /** [[occluded]] down the wide tree. */
-  private def occludedWide(
       ox: Double,
       oy: Double,
       oz: Double,
@@ -461,9 +365,6 @@ object Bvh:
     * pops, at most [[BvhBuilder.MaxDepth]] + 1 deep, so 3 × 129 + 4 slots at most.
     */
   val StackSize: Int = 512
-
-  /** The most primitives a hierarchy tests one after another ([[Bvh.flat]]) by default. */
-  val FlatLimit: Int = 8
 
 /** Scratch space for one thread's queries of a [[World]] or [[Bvh]], and the distance of the last
   * nearest hit found with it. Not thread-safe: each render task makes its own (`World.newQuery`).

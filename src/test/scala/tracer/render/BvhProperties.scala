@@ -169,48 +169,6 @@ class BvhProperties extends ScalaCheckSuite:
       }
     }
 
-  property("a few shapes tested one after another: the walk's answers, bit for bit"):
-    // Bvh.flat: up to FlatLimit spheres and triangles (meshes have MeshProperties) tested in
-    // leaf order, against the walk down the same tree (flatLimit 0).
-    // Copies of a few shapes, so that many rays meet two at the same distance.
-    val fast = shape.suchThat {
-      case _: (Sphere | Triangle) => true
-      case _                      => false
-    }
-    val few =
-      for
-        n      <- Gen.choose(1, Bvh.FlatLimit)
-        kinds  <- Gen.listOfN(3, fast)
-        shapes <- Gen.listOfN(n, Gen.oneOf(kinds))
-      yield shapes
-    forAll(few, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (shapes, rays, limit) =>
-      val flat = Bvh(shapes.toIndexedSeq)
-      val wide = Bvh(shapes.toIndexedSeq, flatLimit = 0)
-      assert(flat.flat && !wide.flat)
-      val (q1, q2) = (Query(), Query())
-      rays.foreach { r =>
-        val o = r.origin
-        val d = r.direction
-        for (cut, index) <- List((Double.PositiveInfinity, Int.MaxValue), (limit, shapes.size))
-        do
-          assertEquals(
-            flat.nearest(o.x, o.y, o.z, d.x, d.y, d.z, cut, index, q1),
-            wide.nearest(o.x, o.y, o.z, d.x, d.y, d.z, cut, index, q2),
-            r.toString
-          )
-          assertEquals(
-            java.lang.Double.doubleToRawLongBits(q1.distance),
-            java.lang.Double.doubleToRawLongBits(q2.distance),
-            r.toString
-          )
-        assertEquals(
-          flat.occluded(o.x, o.y, o.z, d.x, d.y, d.z, limit, q1),
-          wide.occluded(o.x, o.y, o.z, d.x, d.y, d.z, limit, q2),
-          r.toString
-        )
-      }
-    }
-
   test("shapes hit at the same distance: the lowest index wins, wherever they sit in the tree"):
     // Many copies of one triangle and sphere, interleaved: every ray that hits them ties.
     val tile   = Triangle(Vec3(-1, 0, -1), Vec3(1, 0, -1), Vec3(-1, 0, 1))
