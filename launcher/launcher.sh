@@ -85,6 +85,9 @@ tracer_choose_java() {
   local real=() best='' best_feature=0 unknown='' i home version feature line
   # One readlink for all: each candidate's real path, where its release file is.
   while IFS= read -r line; do real+=("$line"); done < <(readlink -f -- "${candidates[@]}" 2>/dev/null)
+  # A path readlink cannot resolve (or one with a newline) would shift the others' lines: then
+  # trust none of them, and each chosen Java is looked up again.
+  if [ "${#real[@]}" -ne "${#candidates[@]}" ]; then real=(); fi
   local best_real='' unknown_real=''
   for i in "${!candidates[@]}"; do
     home=${real[$i]:-${candidates[$i]}}
@@ -131,12 +134,13 @@ tracer_java_flags() {
 }
 
 # tracer_cksums TEXT...: sets tracer_sums to a short stable number (POSIX cksum) for each of one
-# to three TEXTs, for file names: one cksum process for all (each TEXT a here-string on a file
+# to three TEXTs (fails for none), for file names: one cksum process for all (each TEXT a here-string on a file
 # descriptor, so no subshell is started either).
 tracer_cksums() {
   local out line
   tracer_sums=()
   case $# in
+    0) return 1 ;;
     1) out=$(cksum /dev/fd/3 3<<<"$1") ;;
     2) out=$(cksum /dev/fd/3 /dev/fd/4 3<<<"$1" 4<<<"$2") ;;
     *) out=$(cksum /dev/fd/3 /dev/fd/4 /dev/fd/5 3<<<"$1" 4<<<"$2" 5<<<"$3") ;;
@@ -147,7 +151,7 @@ tracer_cksums() {
 # tracer_jar_dir JAR: sets tracer_jar_dir, the absolute directory of JAR (as the path names it).
 tracer_jar_dir() {
   case "$1" in
-    */*) tracer_jar_dir=${1%/*} ;;
+    */*) tracer_jar_dir=${1%/*} tracer_jar_dir=${tracer_jar_dir:-/} ;;
     *) tracer_jar_dir=. ;;
   esac
   case "$tracer_jar_dir" in
@@ -185,9 +189,9 @@ tracer_cache() {
   listing=$(stat -L -c '%s %Y %n' -- "${files[@]}" 2>/dev/null) || true
   # The jar's line comes first: its size and time, then the training scenes' lines.
   stamp=${listing%%$'\n'*}
-  [ "${stamp% "$jar"}" != "$stamp" ] || return 0
-  stamp=${stamp% "$jar"}
-  stamp=${stamp/ /-}
+  local size=${stamp%% *} rest=${stamp#* }
+  [ "${rest#* }" = "$jar" ] || return 0
+  stamp=$size-${rest%% *}
   training=''
   case "$listing" in *$'\n'*) training=${listing#*$'\n'} ;; esac
   tracer_jar_dir "$jar"

@@ -142,6 +142,25 @@ class LauncherSuite extends munit.FunSuite with Images:
       s"jdk-11.0.2 -Xss8m -XX:+UseSerialGC -jar $jar --version"
     )
 
+  work.test("a JDK whose path has a newline does not lend its neighbours the wrong home"): d =>
+    // The launcher resolves every candidate in one readlink, a line each: a path with a newline
+    // (here JAVA_HOME's) would shift the lines after it and pair a java with another's home.
+    val odd  = fakeJdk(Files.createDirectories(d.resolve("a\nb")), "21.0.4")
+    val jdks = Files.createDirectories(d.resolve("jvm"))
+    List("25.0.1", "17.0.15").foreach(fakeJdk(jdks, _))
+    val env = Map(
+      "JAVA_HOME"       -> Some(odd.toString),
+      "TRACER_JDK_DIRS" -> Some(jdks.toString),
+      "TRACER_JAVA"     -> None,
+      "TRACER_CACHE"    -> Some("off")
+    )
+    val e = Processes.run(Seq(launcher.toString, "--version"), d, env)
+    assertEquals((e.status, e.err), (0, ""))
+    assertEquals(
+      e.out.trim,
+      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -jar $jar --version"
+    )
+
   work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
     val old    = fakeJdk(d, "11.0.2")
     val onPath = Files.createDirectories(d.resolve("bin"))
