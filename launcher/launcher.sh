@@ -20,6 +20,11 @@
 # The oldest Java the tracer runs on (the jar's class files are Java 17's).
 readonly tracer_min_java=17
 
+# The width the AOT cache's training run renders its scenes at: the method profiles of 960-pixel
+# renders start users' short renders about 10% sooner than those of 320-pixel ones, for a training
+# of about 15 s instead of 6 (docs/performance.md, round 13). Part of the cache's name.
+readonly tracer_training_width=960
+
 # tracer_release_version HOME: prints JAVA_VERSION from the JDK's HOME/release file (e.g. 25.0.3),
 # or fails when there is none. Reads the file in the shell: no process is started.
 tracer_release_version() {
@@ -197,7 +202,7 @@ tracer_cache() {
   tracer_jar_dir "$jar"
   local dirs=("$tracer_jar_dir")
   user=${XDG_CACHE_HOME:-${HOME:+$HOME/.cache}}
-  tracer_cksums "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}" "$training" \
+  tracer_cksums "$tracer_java_home|$tracer_java_version|${tracer_jvm[*]}|$tracer_training_width" "$training" \
     "$tracer_jar_dir/${jar##*/}" || return 0
   local name="tracer-java$tracer_java_version-${tracer_sums[0]}-jar$stamp-training${tracer_sums[1]}.$kind"
   # Beside the jar, then in the user's cache directory under a name of its own for each jar.
@@ -258,7 +263,7 @@ tracer_cache_make() {
       # JEP 514: the training run writes the cache when it exits (a second JVM assembles it).
       "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
         -XX:AOTCacheOutput="$work/cache.aot" -Xlog:aot=off -Xlog:cds=off \
-        -jar "$jar" -x 320 -p 2 --batch "$work/list" >/dev/null 2>&1 &&
+        -jar "$jar" -x "$tracer_training_width" -p 2 --batch "$work/list" >/dev/null 2>&1 &&
         [ -s "$work/cache.aot" ] && mv -f -- "$work/cache.aot" "$file.partial" || status=1
     else
       "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
