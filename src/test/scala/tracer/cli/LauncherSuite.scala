@@ -147,7 +147,8 @@ class LauncherSuite extends munit.FunSuite with Images:
     // (here JAVA_HOME's) would shift the lines after it and pair a java with another's home.
     val odd  = fakeJdk(Files.createDirectories(d.resolve("a\nb")), "21.0.4")
     val jdks = Files.createDirectories(d.resolve("jvm"))
-    List("25.0.1", "17.0.15").foreach(fakeJdk(jdks, _))
+    // Newer than any real Java on PATH, so that the right pairing wins wherever the test runs.
+    List("99.0.1", "17.0.15").foreach(fakeJdk(jdks, _))
     val env = Map(
       "JAVA_HOME"       -> Some(odd.toString),
       "TRACER_JDK_DIRS" -> Some(jdks.toString),
@@ -158,7 +159,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals((e.status, e.err), (0, ""))
     assertEquals(
       e.out.trim,
-      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -jar $jar --version"
+      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -jar $jar --version"
     )
 
   work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
