@@ -138,18 +138,14 @@ tracer_java_flags() {
   if [ "$tracer_java_feature" -ge 23 ]; then tracer_flags+=(--sun-misc-unsafe-memory-access=allow); fi
 }
 
-# tracer_cksums TEXT...: sets tracer_sums to a short stable number (POSIX cksum) for each of one
-# to three TEXTs (fails for none), for file names: one cksum process for all (each TEXT a here-string on a file
+# tracer_cksums A B C: sets tracer_sums to a short stable number (POSIX cksum) for each of the
+# three texts, for file names: one cksum process for all three (each text a here-string on a file
 # descriptor, so no subshell is started either).
 tracer_cksums() {
   local out line
   tracer_sums=()
-  case $# in
-    0) return 1 ;;
-    1) out=$(cksum /dev/fd/3 3<<<"$1") ;;
-    2) out=$(cksum /dev/fd/3 /dev/fd/4 3<<<"$1" 4<<<"$2") ;;
-    *) out=$(cksum /dev/fd/3 /dev/fd/4 /dev/fd/5 3<<<"$1" 4<<<"$2" 5<<<"$3") ;;
-  esac || return 1
+  [ $# -eq 3 ] || return 1
+  out=$(cksum /dev/fd/3 /dev/fd/4 /dev/fd/5 3<<<"$1" 4<<<"$2" 5<<<"$3") || return 1
   while IFS=' ' read -r line _; do tracer_sums+=("$line"); done <<<"$out"
 }
 
