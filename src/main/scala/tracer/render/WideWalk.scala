@@ -116,19 +116,27 @@ private[render] object WideWalk:
       sz: Int,
       limit: Double
   ): Double =
-    // Perf: on four floats apart: no box object, local doubles narrowed in place.
+    // Perf: on four floats apart: no box object, local doubles narrowed in place. All six planes
+    // are read at fixed offsets from `b` (the sign only picks which is near), so C2 merges the
+    // six index checks into two.
     var tmin = 0.0
     var tmax = limit
-    val nx   = (wb(b + 4 * sx).toDouble - ox) * ix
-    val fx   = (wb(b + 12 - 4 * sx).toDouble - ox) * ix
+    val lx   = (wb(b).toDouble - ox) * ix
+    val hx   = (wb(b + 12).toDouble - ox) * ix
+    val nx   = if sx == 0 then lx else hx
+    val fx   = if sx == 0 then hx else lx
     if nx > tmin then tmin = nx
     if fx < tmax then tmax = fx
-    val ny = (wb(b + 4 + 4 * sy).toDouble - oy) * iy
-    val fy = (wb(b + 16 - 4 * sy).toDouble - oy) * iy
+    val ly = (wb(b + 4).toDouble - oy) * iy
+    val hy = (wb(b + 16).toDouble - oy) * iy
+    val ny = if sy == 0 then ly else hy
+    val fy = if sy == 0 then hy else ly
     if ny > tmin then tmin = ny
     if fy < tmax then tmax = fy
-    val nz = (wb(b + 8 + 4 * sz).toDouble - oz) * iz
-    val fz = (wb(b + 20 - 4 * sz).toDouble - oz) * iz
+    val lz = (wb(b + 8).toDouble - oz) * iz
+    val hz = (wb(b + 20).toDouble - oz) * iz
+    val nz = if sz == 0 then lz else hz
+    val fz = if sz == 0 then hz else lz
     if nz > tmin then tmin = nz
     if fz < tmax then tmax = fz
     if tmin <= tmax then tmin else Double.PositiveInfinity
