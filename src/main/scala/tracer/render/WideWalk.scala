@@ -99,8 +99,8 @@ private[render] object WideWalk:
 
   /** The distance at which the ray enters the float box at `b` of `wb` (a child's low x; its
     * other coordinates 4 floats apart), or +∞ when it misses it before `limit`: the slab test on
-    * the float box widened to double (exactly), near planes chosen by `sx` etc. (0 for the low
-    * side, 3 for the high: 4 × that floats on).
+    * the float box widened to double (exactly), the near plane of each axis the low one
+    * when `sx` etc. is 0, the high one when it is 3.
     */
   inline def entry(
       wb: Array[Float],
@@ -117,8 +117,8 @@ private[render] object WideWalk:
       limit: Double
   ): Double =
     // Perf: on four floats apart: no box object, local doubles narrowed in place. All six planes
-    // are read at fixed offsets from `b` (the sign only picks which is near), so C2 merges the
-    // six index checks into two.
+    // are read at fixed offsets from `b` (the sign only picks which is near), so C2 can merge
+    // the six index checks into two (range check smearing).
     var tmin = 0.0
     var tmax = limit
     val lx   = (wb(b).toDouble - ox) * ix
