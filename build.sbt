@@ -62,7 +62,10 @@ lazy val root = project
     // System tests start the real command; they need their own JVM and the working directory.
     Test / fork          := true,
     Test / baseDirectory := (ThisBuild / baseDirectory).value,
-    Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m"),
+    // The Vector API's module, so that the four-box walks (render/Lanes.scala) are tested too;
+    // they are used only when asked for (-Dtracer.lanes=on), so the other tests walk one box at a
+    // time.
+    Test / javaOptions ++= Seq("-Xmx2g", "-Xss4m", "--add-modules=jdk.incubator.vector"),
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
     // The system tests run the real launcher, which needs the assembled jar, and the release.
     Test / test               := (Test / test).dependsOn(assembly, dist).value,

@@ -13,8 +13,14 @@ import tracer.geometry.{Mesh, Shape}
   * @param shapes the shapes it indexes; those without bounds (planes) are left out
   * @param pool   where to build it and its meshes' trees: the render's threads, or the calling
   *   thread for `None`
+  * @param lanes  walk with the Vector API's four-box test ([[BvhLanes]]): the same answers
+  *   (`LanesProperties`); only where [[LaneSupport.enabled]]. Its meshes choose for themselves.
   */
-final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None):
+final class Bvh(
+    shapes: IndexedSeq[Shape],
+    pool: Option[ExecutionContext] = None,
+    lanes: Boolean = LaneSupport.enabled
+):
   private val tree  = BvhBuilder(shapes).build(pool)
   private val boxes = tree.boxes
   private val links = tree.links
@@ -23,6 +29,8 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
   private val wb    = wide.boxes
   private val wc    = wide.child
   private val wn    = wide.count
+  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
+  private val fast: BvhLanes | Null = if lanes then BvhLanes(wide, prims) else null
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
@@ -59,60 +67,31 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
       limitIndex: Int,
       query: Query
   ): Int =
-    // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
-    // pushed farthest first with their entry distances, so the nearest is walked next and a popped
-    // slot beyond the best hit is dropped untested; leaves test the double-precision primitives
-    // (docs/performance.md, round 5; WorldBench).
-    val stack   = query.nodes
-    val entries = query.entries
-    var best    = limitIndex
-    var bestT   = limit
-    // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
-    var face = -1
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      var sp = WideWalk.seed(wide.size, stack, entries)
-      while sp > 0 do
-        sp -= 1
-        val slot = stack(sp)
-        // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
-        if entries(sp) <= bestT then
-          val count = WideWalk.count(wn, slot)
-          if count > 0 then
-            var k   = wc(slot)
-            val end = k + count
-            while k < end do
-              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
-              if t <= bestT && t < Double.PositiveInfinity then
-                val i = prims.index(k)
-                if t < bestT || i < best then
-                  bestT = t
-                  best = i
-                  face = query.meshFace
-              k += 1
-          else
-            sp = WideWalk.push(
-              wb,
-              wn,
-              WideWalk.node(wc, slot),
-              sp,
-              stack,
-              entries,
-              ox,
-              oy,
-              oz,
-              ix,
-              iy,
-              iz,
-              sx,
-              sy,
-              sz,
-              bestT,
-              ordered = true
-            )
-    }
-    query.distance = bestT
-    query.face = face
-    best
+    val lanes = fast
+    if lanes != null then lanes.nearest(ox, oy, oz, dx, dy, dz, limit, limitIndex, query)
+    else
+      BvhWalk.nearest(wide.size, wc, wn, prims, ox, oy, oz, dx, dy, dz, limit, limitIndex, query) {
+        (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+          WideWalk.push(
+            wb,
+            wn,
+            node,
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bound,
+            true
+          )
+      }
 
   /** True when some indexed shape is hit by the ray (origin o, unit direction d) at a distance
     * below `limit`; stops at the first.
@@ -127,28 +106,15 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
       limit: Double,
       query: Query
   ): Boolean =
-    // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
-    val stack   = query.nodes
-    val entries = query.entries
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      var hit = false
-      var sp  = WideWalk.seed(wide.size, stack, entries)
-      while sp > 0 && !hit do
-        sp -= 1
-        val slot  = stack(sp)
-        val count = WideWalk.count(wn, slot)
-        if count > 0 then
-          var k   = wc(slot)
-          val end = k + count
-          while k < end && !hit do
-            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
-            k += 1
-          if hit then query.blocker = k - 1
-        else
-          sp = WideWalk.push(
+    val lanes = fast
+    if lanes != null then lanes.occluded(ox, oy, oz, dx, dy, dz, limit, query)
+    else
+      BvhWalk.occluded(wide.size, wc, wn, prims, ox, oy, oz, dx, dy, dz, limit, query) {
+        (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+          WideWalk.push(
             wb,
             wn,
-            WideWalk.node(wc, slot),
+            node,
             sp,
             stack,
             entries,
@@ -161,11 +127,10 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
             sx,
             sy,
             sz,
-            limit,
-            ordered = false
+            bound,
+            false
           )
-      hit
-    }
+      }
 
   /** True when primitive `k` (in leaf order, as [[occluded]] leaves a blocker in
     * `query.blocker`) is met by the ray at a t below `limit`: [[Primitives.blocks]], except that
@@ -359,6 +324,126 @@ final class Bvh(shapes: IndexedSeq[Shape], pool: Option[ExecutionContext] = None
     if fz < tmax then tmax = fz
     if tmin <= tmax then tmin else Double.PositiveInfinity
 
+/** The two walks down the scene's [[WideTree]], written once for both ways of testing a node's
+  * child boxes, as [[MeshWalk]]'s.
+  */
+private[render] object BvhWalk:
+  /** [[Bvh.nearest]] on the tree of `size` nodes (children `wc`, counts `wn`) over `prims`. */
+  inline def nearest(
+      size: Int,
+      wc: Array[Int],
+      wn: Array[Int],
+      prims: Primitives,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      limitIndex: Int,
+      query: Query
+  )(
+      inline push: (
+          Int,
+          Int,
+          Array[Int],
+          Array[Double],
+          Double,
+          Double,
+          Double,
+          Int,
+          Int,
+          Int,
+          Double
+      ) => Int
+  ): Int =
+    // Perf: the 4-wide tree, ordered: a node's four child boxes are tested together, the ones hit
+    // pushed farthest first with their entry distances, so the nearest is walked next and a popped
+    // slot beyond the best hit is dropped untested; leaves test the double-precision primitives
+    // (docs/performance.md, round 5; WorldBench).
+    val stack   = query.nodes
+    val entries = query.entries
+    var best    = limitIndex
+    var bestT   = limit
+    // Why: the face of the best hit so far, when that is a mesh's (Primitives.distance says).
+    var face = -1
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp = WideWalk.seed(size, stack, entries)
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        // A slot entered beyond the best hit so far cannot hold a nearer one (ties still count).
+        if entries(sp) <= bestT then
+          val count = WideWalk.count(wn, slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val i = prims.index(k)
+                if t < bestT || i < best then
+                  bestT = t
+                  best = i
+                  face = query.meshFace
+              k += 1
+          else sp = push(WideWalk.node(wc, slot), sp, stack, entries, ix, iy, iz, sx, sy, sz, bestT)
+    }
+    query.distance = bestT
+    query.face = face
+    best
+
+  /** [[Bvh.occluded]] on the tree, as [[nearest]]. */
+  inline def occluded(
+      size: Int,
+      wc: Array[Int],
+      wn: Array[Int],
+      prims: Primitives,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  )(
+      inline push: (
+          Int,
+          Int,
+          Array[Int],
+          Array[Double],
+          Double,
+          Double,
+          Double,
+          Int,
+          Int,
+          Int,
+          Double
+      ) => Int
+  ): Boolean =
+    // Perf: any hit will do (shadow rays): the 4-wide tree without ordering, and an early exit.
+    val stack   = query.nodes
+    val entries = query.entries
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var hit = false
+      var sp  = WideWalk.seed(size, stack, entries)
+      while sp > 0 && !hit do
+        sp -= 1
+        val slot  = stack(sp)
+        val count = WideWalk.count(wn, slot)
+        if count > 0 then
+          var k   = wc(slot)
+          val end = k + count
+          while k < end && !hit do
+            hit = Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+            k += 1
+          if hit then query.blocker = k - 1
+        else sp = push(WideWalk.node(wc, slot), sp, stack, entries, ix, iy, iz, sx, sy, sz, limit)
+      hit
+    }
+
 /** Construction constants of [[Bvh]]. */
 object Bvh:
   /** The scratch stack size a query needs: a wide node pushes at most four slots for the one it
@@ -378,6 +463,9 @@ final class Query:
     */
   private[render] val meshNodes   = new Array[Int](Bvh.StackSize)
   private[render] val meshEntries = new Array[Double](Bvh.StackSize)
+
+  /** Four entry distances of a node's children, for a walk with [[Lanes]]. */
+  private[render] val lanes = new Array[Double](4)
 
   /** The primitive (leaf order) that the last [[Bvh.occluded]] walk found blocking the ray;
     * written only when it finds one.

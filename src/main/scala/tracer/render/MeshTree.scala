@@ -17,8 +17,14 @@ import tracer.geometry.Mesh
   *
   * @param mesh the mesh
   * @param pool where to build the tree: the render's threads, or this one for `None`
+  * @param lanes walk with the Vector API's four-box test ([[MeshLanes]]) instead of one box at a
+  *   time: the same answers (`LanesProperties`); only where [[LaneSupport.enabled]]
   */
-final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
+final class MeshTree(
+    mesh: Mesh,
+    pool: Option[ExecutionContext] = None,
+    lanes: Boolean = LaneSupport.enabled
+):
   // The binary tree is dropped once collapsed: the queries walk the wide one.
   private val (wide, faces) = MeshTree.wideTree(mesh, pool)
   private val wb            = wide.boxes
@@ -28,6 +34,9 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
   private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
+  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
+  private val fast: MeshLanes | Null =
+    if lanes then MeshLanes(wide, faces, planes, at, vertices) else null
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size
@@ -47,53 +56,46 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       limit: Double,
       query: Query
   ): Double =
-    // Perf: Bvh.nearest's ordered walk of a 4-wide tree on the query's second stack (the scene's
-    // walk is still under way on the first), face tests on the leaf-order arrays.
-    val stack   = query.meshNodes
-    val entries = query.meshEntries
-    var best    = Int.MaxValue
-    var bestT   = limit
-    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
-      var sp = WideWalk.seed(wide.size, stack, entries)
-      while sp > 0 do
-        sp -= 1
-        val slot = stack(sp)
-        if entries(sp) <= bestT then
-          val count = WideWalk.count(wn, slot)
-          if count > 0 then
-            var k   = wc(slot)
-            val end = k + count
-            while k < end do
-              val t = face(k, bestT, ox, oy, oz, dx, dy, dz)
-              if t <= bestT && t < Double.PositiveInfinity then
-                val f = faces(k)
-                if t < bestT || f < best then
-                  bestT = t
-                  best = f
-              k += 1
-          else
-            sp = WideWalk.push(
-              wb,
-              wn,
-              WideWalk.node(wc, slot),
-              sp,
-              stack,
-              entries,
-              ox,
-              oy,
-              oz,
-              ix,
-              iy,
-              iz,
-              sx,
-              sy,
-              sz,
-              bestT,
-              true
-            )
-    }
-    query.meshFace = best
-    if best == Int.MaxValue then Double.PositiveInfinity else bestT
+    val lanes = fast
+    if lanes != null then lanes.nearest(ox, oy, oz, dx, dy, dz, limit, query)
+    else
+      MeshWalk.nearest(
+        wide.size,
+        wc,
+        wn,
+        faces,
+        planes,
+        at,
+        vertices,
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz,
+        limit,
+        query
+      ) { (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+        WideWalk.push(
+          wb,
+          wn,
+          node,
+          sp,
+          stack,
+          entries,
+          ox,
+          oy,
+          oz,
+          ix,
+          iy,
+          iz,
+          sx,
+          sy,
+          sz,
+          bound,
+          true
+        )
+      }
 
   /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
     * first, and leaves the node whose children hold it in `query.blockerNode`.
@@ -121,12 +123,154 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
       limit: Double,
       query: Query
   ): Boolean =
+    val lanes = fast
+    if lanes != null then lanes.occludedBelow(node, ox, oy, oz, dx, dy, dz, limit, query)
+    else
+      MeshWalk.occludedBelow(
+        wide.size,
+        wc,
+        wn,
+        planes,
+        at,
+        vertices,
+        node,
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz,
+        limit,
+        query
+      ) { (n, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+        WideWalk.push(
+          wb,
+          wn,
+          n,
+          sp,
+          stack,
+          entries,
+          ox,
+          oy,
+          oz,
+          ix,
+          iy,
+          iz,
+          sx,
+          sy,
+          sz,
+          bound,
+          false
+        )
+      }
+
+/** The two walks down a mesh's [[WideTree]], written once for both ways of testing a node's child
+  * boxes: `push` pushes the children of a node that the ray enters ([[WideWalk.push]] or
+  * [[Lanes.push]]), given the node, the stack's size, slots and entries, the ray's inverse
+  * direction and signs and the limit, and returns the stack's new size.
+  */
+private[render] object MeshWalk:
+  /** [[MeshTree.nearest]] on the tree of `size` nodes (children `wc`, counts `wn`) over the faces
+    * `faces` in leaf order, with their planes and corner offsets `at` into `vertices`.
+    */
+  inline def nearest(
+      size: Int,
+      wc: Array[Int],
+      wn: Array[Int],
+      faces: Array[Int],
+      planes: Array[Double],
+      at: Array[Int],
+      vertices: IArray[Double],
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  )(
+      inline push: (
+          Int,
+          Int,
+          Array[Int],
+          Array[Double],
+          Double,
+          Double,
+          Double,
+          Int,
+          Int,
+          Int,
+          Double
+      ) => Int
+  ): Double =
+    // Perf: Bvh.nearest's ordered walk of a 4-wide tree on the query's second stack (the scene's
+    // walk is still under way on the first), face tests on the leaf-order arrays.
+    val stack   = query.meshNodes
+    val entries = query.meshEntries
+    var best    = Int.MaxValue
+    var bestT   = limit
+    WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
+      var sp = WideWalk.seed(size, stack, entries)
+      while sp > 0 do
+        sp -= 1
+        val slot = stack(sp)
+        if entries(sp) <= bestT then
+          val count = WideWalk.count(wn, slot)
+          if count > 0 then
+            var k   = wc(slot)
+            val end = k + count
+            while k < end do
+              val t = face(planes, at, vertices, k, bestT, ox, oy, oz, dx, dy, dz)
+              if t <= bestT && t < Double.PositiveInfinity then
+                val f = faces(k)
+                if t < bestT || f < best then
+                  bestT = t
+                  best = f
+              k += 1
+          else sp = push(WideWalk.node(wc, slot), sp, stack, entries, ix, iy, iz, sx, sy, sz, bestT)
+    }
+    query.meshFace = best
+    if best == Int.MaxValue then Double.PositiveInfinity else bestT
+
+  /** [[MeshTree.occludedBelow]] on the tree, as [[nearest]]. */
+  inline def occludedBelow(
+      size: Int,
+      wc: Array[Int],
+      wn: Array[Int],
+      planes: Array[Double],
+      at: Array[Int],
+      vertices: IArray[Double],
+      node: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  )(
+      inline push: (
+          Int,
+          Int,
+          Array[Int],
+          Array[Double],
+          Double,
+          Double,
+          Double,
+          Int,
+          Int,
+          Int,
+          Double
+      ) => Int
+  ): Boolean =
     // Perf: Bvh.occluded's any-hit walk, unordered, with an early exit.
     val stack   = query.meshNodes
     val entries = query.meshEntries
     WideWalk.walk(dx, dy, dz) { (ix, iy, iz, sx, sy, sz) =>
       var hit = false
-      var sp  = WideWalk.seed(wide.size, stack, entries, node)
+      var sp  = WideWalk.seed(size, stack, entries, node)
       while sp > 0 && !hit do
         sp -= 1
         val slot  = stack(sp)
@@ -135,34 +279,18 @@ final class MeshTree(mesh: Mesh, pool: Option[ExecutionContext] = None):
           var k   = wc(slot)
           val end = k + count
           while k < end && !hit do
-            hit = face(k, limit, ox, oy, oz, dx, dy, dz) < limit
+            hit = face(planes, at, vertices, k, limit, ox, oy, oz, dx, dy, dz) < limit
             k += 1
           if hit then query.blockerNode = slot / WideTree.Width
-        else
-          sp = WideWalk.push(
-            wb,
-            wn,
-            WideWalk.node(wc, slot),
-            sp,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            limit,
-            false
-          )
+        else sp = push(WideWalk.node(wc, slot), sp, stack, entries, ix, iy, iz, sx, sy, sz, limit)
       hit
     }
 
   /** The distance to leaf-order face k ([[tracer.geometry.Mesh.faceDistance]]). */
   private inline def face(
+      planes: Array[Double],
+      at: Array[Int],
+      vertices: IArray[Double],
       k: Int,
       cutoff: Double,
       ox: Double,

@@ -247,3 +247,31 @@ class BvhProperties extends ScalaCheckSuite:
     // Collapsed four-wide: at most about a third as many nodes as the binary tree.
     assert(bvh.wideNodeCount <= bvh.nodeCount / 2, s"${bvh.wideNodeCount} of ${bvh.nodeCount}")
     assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newQuery()), 105)
+
+  // The scene's walks with the Vector API (`TRACER_LANES=on`) against its walks one box at a time.
+  property("the four-box walks (Lanes) answer as the one-box walks, bit for bit"):
+    assume(LaneSupport.available, "the test JVM runs with --add-modules jdk.incubator.vector")
+    val shapes =
+      Gen.choose(0, 200).flatMap(n => Gen.listOfN(n, Gen.frequency(3 -> shape, 1 -> general)))
+    forAll(shapes, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (s, rays, limit) =>
+      val (lanes, plain) = (Bvh(s.toIndexedSeq, lanes = true), Bvh(s.toIndexedSeq, lanes = false))
+      val (q1, q2)       = (Query(), Query())
+      rays.foreach { r =>
+        val (o, d) = (r.origin, r.direction)
+        val i      = lanes.nearest(o.x, o.y, o.z, d.x, d.y, d.z, limit, Int.MaxValue, q1)
+        assertEquals(
+          i,
+          plain.nearest(o.x, o.y, o.z, d.x, d.y, d.z, limit, Int.MaxValue, q2),
+          r.toString
+        )
+        assertEquals(
+          java.lang.Double.doubleToRawLongBits(q1.distance),
+          java.lang.Double.doubleToRawLongBits(q2.distance),
+          r.toString
+        )
+        assertEquals(q1.face, q2.face, r.toString)
+        val b = lanes.occluded(o.x, o.y, o.z, d.x, d.y, d.z, limit, q1)
+        assertEquals(b, plain.occluded(o.x, o.y, o.z, d.x, d.y, d.z, limit, q2), r.toString)
+        if b then assertEquals(q1.blocker, q2.blocker, r.toString)
+      }
+    }

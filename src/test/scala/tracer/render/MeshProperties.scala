@@ -214,3 +214,22 @@ class MeshProperties extends ScalaCheckSuite:
     )
     assertEquals(Shape.surfaceCoordinates(m, Vec3(0, 0, 0), 0), SurfaceCoordinates(0.25, 0.5))
     assertEquals(Shape.surfaceCoordinates(m, Vec3(0, 1, 0), 1), SurfaceCoordinates(1, 0))
+
+  // A mesh's walks with the Vector API (`TRACER_LANES=on`) against its walks one box at a time:
+  // the same face, distance and shadow answer, bit for bit, and the same blocker's node.
+  property("the four-box walks (Lanes) answer as the one-box walks, bit for bit"):
+    assume(LaneSupport.available, "the test JVM runs with --add-modules jdk.incubator.vector")
+    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 30.0)) { case ((m, rs), l) =>
+      val (lanes, plain) = (MeshTree(m, lanes = true), MeshTree(m, lanes = false))
+      val (q1, q2)       = (Query(), Query())
+      rs.foreach { r =>
+        val (o, d) = (r.origin, r.direction)
+        val t1     = lanes.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q1)
+        val t2     = plain.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q2)
+        assertEquals(bits(t1), bits(t2), s"$m $r")
+        assertEquals(q1.meshFace, q2.meshFace, s"$m $r")
+        val b1 = lanes.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q1)
+        assertEquals(b1, plain.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q2), s"$m $r $l")
+        if b1 then assertEquals(q1.blockerNode, q2.blockerNode, s"$m $r $l")
+      }
+    }
