@@ -15,6 +15,8 @@
 #                     (for comparisons); anything else (or unset): the cache below
 #   TRACER_JDK_DIRS   where installed JDKs are looked for (default "/usr/lib/jvm"), a list
 #                     separated by ':'
+#   TRACER_LANES      "on": the ray kernel tests four boxes at once with the Vector API (faster
+#                     renders of many shapes, a slower start); "off" (or unset): one at a time
 # shellcheck shell=bash
 
 # The oldest Java the tracer runs on (the jar's class files are Java 17's).
@@ -323,7 +325,45 @@ tracer_launch() {
   # keeping the heap (and so the resident memory) small: a 3840x2160 render peaks at 344 MB
   # instead of 1.1 GB (docs/performance.md). TRACER_JAVA_OPTS replaces them.
   read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC}"
+  case "${TRACER_LANES:-off}" in
+    off) ;;
+    # The walks test four boxes at once with the Vector API (docs/performance.md, round 15); its
+    # module is incubating, so the JVM must be told to load it. Part of the cache's name.
+    on) tracer_jvm+=(--add-modules jdk.incubator.vector -Dtracer.lanes=on) ;;
+    *)
+      echo "tracer: TRACER_LANES='$TRACER_LANES' must be on or off" >&2
+      exit 2
+      ;;
+  esac
   tracer_cache "$jar" ${training[@]+"${training[@]}"}
+  if [ "${TRACER_LANES:-off}" = on ]; then
+    # The JVM warns on every start that an incubating module is in use, on standard error, and no
+    # option silences it: its standard error goes through tracer_unwarn, which drops that line.
+    # The tracer is told whether the real standard error is a terminal (for its progress line).
+    # The launcher waits for the filter too, so every line is written before it exits.
+    local terminal=false status=0 filter unwarned
+    if [ -t 2 ]; then terminal=true; fi
+    exec {unwarned}> >(tracer_unwarn)
+    filter=$!
+    "$tracer_java" ${tracer_cache_flags[@]+"${tracer_cache_flags[@]}"} \
+      ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" -Dtracer.terminal="$terminal" \
+      -jar "$jar" "$@" 2>&"$unwarned" || status=$?
+    exec {unwarned}>&-
+    wait "$filter" 2>/dev/null || true
+    exit "$status"
+  fi
   exec "$tracer_java" ${tracer_cache_flags[@]+"${tracer_cache_flags[@]}"} \
     ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" -jar "$jar" "$@"
+}
+
+# tracer_unwarn: copies standard input to standard error, less the JVM's warning that it uses
+# the incubating Vector API module (the first line it writes); the rest passes as it comes (cat),
+# unfinished lines such as the progress line included.
+tracer_unwarn() {
+  local line
+  while IFS= read -r line; do
+    if [ "$line" = "WARNING: Using incubator modules: jdk.incubator.vector" ]; then exec cat >&2; fi
+    printf '%s\n' "$line" >&2
+  done
+  if [ -n "$line" ]; then printf '%s' "$line" >&2; fi
 }

@@ -55,8 +55,17 @@ object Progress:
       progress
     }
 
-  /** True when file descriptor 2 is a terminal (Linux: it links to a tty device). */
+  /** True when file descriptor 2 is a terminal (Linux: it links to a tty device), or, when the
+    * launcher passes standard error on through a filter of its own (`TRACER_LANES=on`), when the
+    * system property `tracer.terminal` says the real one is.
+    */
   private def stderrIsTerminal: Boolean =
+    sys.props.get("tracer.terminal") match
+      case Some(said) => said == "true"
+      case None       => fdIsTerminal
+
+  /** True when this process's file descriptor 2 links to a tty device. */
+  private def fdIsTerminal: Boolean =
     try
       val target = Files.readSymbolicLink(Path.of("/proc/self/fd/2")).toString
       target.startsWith("/dev/pts/") || target.startsWith("/dev/tty")

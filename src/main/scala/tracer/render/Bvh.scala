@@ -30,7 +30,7 @@ final class Bvh(
   private val wc    = wide.child
   private val wn    = wide.count
   // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
-  private val fast: BvhLanes | Null = if lanes then BvhLanes(wide, prims) else null
+  private val fast: Option[BvhLanes] = Option.when(lanes)(BvhLanes(wide, prims))
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
@@ -67,11 +67,24 @@ final class Bvh(
       limitIndex: Int,
       query: Query
   ): Int =
-    val lanes = fast
-    if lanes != null then lanes.nearest(ox, oy, oz, dx, dy, dz, limit, limitIndex, query)
-    else
-      BvhWalk.nearest(wide.size, wc, wn, prims, ox, oy, oz, dx, dy, dz, limit, limitIndex, query) {
-        (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+    fast match
+      case Some(lanes) => lanes.nearest(ox, oy, oz, dx, dy, dz, limit, limitIndex, query)
+      case None        =>
+        BvhWalk.nearest(
+          wide.size,
+          wc,
+          wn,
+          prims,
+          ox,
+          oy,
+          oz,
+          dx,
+          dy,
+          dz,
+          limit,
+          limitIndex,
+          query
+        ) { (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
           WideWalk.push(
             wb,
             wn,
@@ -91,7 +104,7 @@ final class Bvh(
             bound,
             true
           )
-      }
+        }
 
   /** True when some indexed shape is hit by the ray (origin o, unit direction d) at a distance
     * below `limit`; stops at the first.
@@ -106,31 +119,31 @@ final class Bvh(
       limit: Double,
       query: Query
   ): Boolean =
-    val lanes = fast
-    if lanes != null then lanes.occluded(ox, oy, oz, dx, dy, dz, limit, query)
-    else
-      BvhWalk.occluded(wide.size, wc, wn, prims, ox, oy, oz, dx, dy, dz, limit, query) {
-        (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
-          WideWalk.push(
-            wb,
-            wn,
-            node,
-            sp,
-            stack,
-            entries,
-            ox,
-            oy,
-            oz,
-            ix,
-            iy,
-            iz,
-            sx,
-            sy,
-            sz,
-            bound,
-            false
-          )
-      }
+    fast match
+      case Some(lanes) => lanes.occluded(ox, oy, oz, dx, dy, dz, limit, query)
+      case None        =>
+        BvhWalk.occluded(wide.size, wc, wn, prims, ox, oy, oz, dx, dy, dz, limit, query) {
+          (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+            WideWalk.push(
+              wb,
+              wn,
+              node,
+              sp,
+              stack,
+              entries,
+              ox,
+              oy,
+              oz,
+              ix,
+              iy,
+              iz,
+              sx,
+              sy,
+              sz,
+              bound,
+              false
+            )
+        }
 
   /** True when primitive `k` (in leaf order, as [[occluded]] leaves a blocker in
     * `query.blocker`) is met by the ray at a t below `limit`: [[Primitives.blocks]], except that

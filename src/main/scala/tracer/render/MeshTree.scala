@@ -35,8 +35,8 @@ final class MeshTree(
   // offsets of its corners in `vertices` at 3k.
   private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
   // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
-  private val fast: MeshLanes | Null =
-    if lanes then MeshLanes(wide, faces, planes, at, vertices) else null
+  private val fast: Option[MeshLanes] =
+    Option.when(lanes)(MeshLanes(wide, faces, planes, at, vertices))
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size
@@ -56,46 +56,46 @@ final class MeshTree(
       limit: Double,
       query: Query
   ): Double =
-    val lanes = fast
-    if lanes != null then lanes.nearest(ox, oy, oz, dx, dy, dz, limit, query)
-    else
-      MeshWalk.nearest(
-        wide.size,
-        wc,
-        wn,
-        faces,
-        planes,
-        at,
-        vertices,
-        ox,
-        oy,
-        oz,
-        dx,
-        dy,
-        dz,
-        limit,
-        query
-      ) { (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
-        WideWalk.push(
-          wb,
+    fast match
+      case Some(lanes) => lanes.nearest(ox, oy, oz, dx, dy, dz, limit, query)
+      case None        =>
+        MeshWalk.nearest(
+          wide.size,
+          wc,
           wn,
-          node,
-          sp,
-          stack,
-          entries,
+          faces,
+          planes,
+          at,
+          vertices,
           ox,
           oy,
           oz,
-          ix,
-          iy,
-          iz,
-          sx,
-          sy,
-          sz,
-          bound,
-          true
-        )
-      }
+          dx,
+          dy,
+          dz,
+          limit,
+          query
+        ) { (node, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+          WideWalk.push(
+            wb,
+            wn,
+            node,
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bound,
+            true
+          )
+        }
 
   /** True when some face is met by the ray at a t below `limit` (a shadow test); stops at the
     * first, and leaves the node whose children hold it in `query.blockerNode`.
@@ -123,46 +123,46 @@ final class MeshTree(
       limit: Double,
       query: Query
   ): Boolean =
-    val lanes = fast
-    if lanes != null then lanes.occludedBelow(node, ox, oy, oz, dx, dy, dz, limit, query)
-    else
-      MeshWalk.occludedBelow(
-        wide.size,
-        wc,
-        wn,
-        planes,
-        at,
-        vertices,
-        node,
-        ox,
-        oy,
-        oz,
-        dx,
-        dy,
-        dz,
-        limit,
-        query
-      ) { (n, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
-        WideWalk.push(
-          wb,
+    fast match
+      case Some(lanes) => lanes.occludedBelow(node, ox, oy, oz, dx, dy, dz, limit, query)
+      case None        =>
+        MeshWalk.occludedBelow(
+          wide.size,
+          wc,
           wn,
-          n,
-          sp,
-          stack,
-          entries,
+          planes,
+          at,
+          vertices,
+          node,
           ox,
           oy,
           oz,
-          ix,
-          iy,
-          iz,
-          sx,
-          sy,
-          sz,
-          bound,
-          false
-        )
-      }
+          dx,
+          dy,
+          dz,
+          limit,
+          query
+        ) { (n, sp, stack, entries, ix, iy, iz, sx, sy, sz, bound) =>
+          WideWalk.push(
+            wb,
+            wn,
+            n,
+            sp,
+            stack,
+            entries,
+            ox,
+            oy,
+            oz,
+            ix,
+            iy,
+            iz,
+            sx,
+            sy,
+            sz,
+            bound,
+            false
+          )
+        }
 
 /** The two walks down a mesh's [[WideTree]], written once for both ways of testing a node's child
   * boxes: `push` pushes the children of a node that the ray enters ([[WideWalk.push]] or

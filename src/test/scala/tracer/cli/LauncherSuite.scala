@@ -230,3 +230,46 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals(e.status, 0, e.out + e.err)
     assert(e.out.contains("\rtracer: rendering ") && e.out.contains(" rows)"), e.out)
     assert(e.out.contains("\r\u001b[K"), "the line is erased at the end")
+
+  work.test("TRACER_LANES=on: the same picture, and nothing on stderr (the JVM's warning dropped)"):
+    d =>
+      val on    = Map("TRACER_LANES" -> Some("on"))
+      val plain = Processes.run(Seq(launcher.toString, "-x", "160", "-i", "basics.xml", "p.png"), d)
+      assertEquals(plain, Processes.Exit(0, "", ""))
+      val lanes =
+        Processes.run(Seq(launcher.toString, "-x", "160", "-i", "basics.xml", "l.png"), d, on)
+      assertEquals(lanes, Processes.Exit(0, "", ""))
+      assert(
+        java.util.Arrays
+          .equals(Files.readAllBytes(d.resolve("p.png")), Files.readAllBytes(d.resolve("l.png"))),
+        "the same bytes"
+      )
+      // A user's error still reaches stderr, as one line, with its exit status.
+      Files.writeString(d.resolve("bad.xml"), "<scene><camera/></scene>")
+      val bad = Processes.run(Seq(launcher.toString, "-i", "bad.xml", "o.png"), d, on)
+      assertEquals((bad.status, bad.out), (1, ""))
+      assertEquals(bad.err.linesIterator.toList.length, 1, bad.err)
+      assert(bad.err.startsWith("tracer: scene: line 1: <camera>: missing <location>"), bad.err)
+
+  work.test("TRACER_LANES other than on or off is one line and exit 2"): d =>
+    val e = Processes.run(
+      Seq(launcher.toString, "-i", "basics.xml", "o.png"),
+      d,
+      Map("TRACER_LANES" -> Some("fast"))
+    )
+    assertEquals((e.status, e.out), (2, ""))
+    assertEquals(e.err, "tracer: TRACER_LANES='fast' must be on or off\n")
+    assert(!Files.exists(d.resolve("o.png")))
+
+  work.test("TRACER_LANES=on on a terminal still shows the progress line"): d =>
+    assume(
+      Files.isExecutable(Path.of("/usr/bin/script")),
+      "needs script(1) to give the run a terminal"
+    )
+    Files.copy(home.resolve("scenes/showcase.xml"), d.resolve("showcase.xml"))
+    Files.createSymbolicLink(d.resolve("textures"), home.resolve("scenes/textures"))
+    val command = s"cd '$d' && TRACER_LANES=on '$launcher' -x 1200 -a 3 -p 1 o.png < showcase.xml"
+    val e = runIn(d, Path.of("/dev/null"), List("/usr/bin/script", "-qec", command, "/dev/null"))
+    assertEquals(e.status, 0, e.out + e.err)
+    assert(e.out.contains("\rtracer: rendering ") && e.out.contains(" rows)"), e.out)
+    assert(!e.out.contains("WARNING"), e.out)
