@@ -328,8 +328,16 @@ tracer_launch() {
   case "${TRACER_LANES:-off}" in
     off) ;;
     # The walks test four boxes at once with the Vector API (docs/performance.md, round 15); its
-    # module is incubating, so the JVM must be told to load it. Part of the cache's name.
-    on) tracer_jvm+=(--add-modules jdk.incubator.vector -Dtracer.lanes=on) ;;
+    # module is incubating, so the JVM must be told to load it. Vector code runs very slowly until
+    # C2 compiles it, so C2 compiles the four-box walks 20 times sooner and keeps every branch
+    # instead of trapping the ones its first profile did not see (a trap sends the walk back to the
+    # interpreter until it is compiled again). Part of the cache's name.
+    on)
+      tracer_jvm+=(--add-modules jdk.incubator.vector -Dtracer.lanes=on -XX:PerMethodTrapLimit=0
+        -XX:CompileCommand=quiet
+        "-XX:CompileCommand=CompileThresholdScaling,tracer.render.BvhLanes::*,0.05"
+        "-XX:CompileCommand=CompileThresholdScaling,tracer.render.MeshLanes::*,0.05")
+      ;;
     *)
       echo "tracer: TRACER_LANES='$TRACER_LANES' must be on or off" >&2
       exit 2

@@ -13,13 +13,14 @@ import tracer.geometry.{Mesh, Shape}
   * @param shapes the shapes it indexes; those without bounds (planes) are left out
   * @param pool   where to build it and its meshes' trees: the render's threads, or the calling
   *   thread for `None`
-  * @param lanes  walk with the Vector API's four-box test ([[BvhLanes]]): the same answers
-  *   (`LanesProperties`); only where [[LaneSupport.enabled]]. Its meshes choose for themselves.
+  * @param lanes  whether a tree of so many wide nodes walks with the Vector API's four-box test
+  *   ([[BvhLanes]]): the same answers (`BvhProperties`); by default [[LaneSupport.choose]]. Its
+  *   meshes choose for themselves.
   */
 final class Bvh(
     shapes: IndexedSeq[Shape],
     pool: Option[ExecutionContext] = None,
-    lanes: Boolean = LaneSupport.enabled
+    lanes: Int => Boolean = LaneSupport.choose
 ):
   private val tree  = BvhBuilder(shapes).build(pool)
   private val boxes = tree.boxes
@@ -30,7 +31,7 @@ final class Bvh(
   private val wc    = wide.child
   private val wn    = wide.count
   // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
-  private val fast: Option[BvhLanes] = Option.when(lanes)(BvhLanes(wide, prims))
+  private val fast: Option[BvhLanes] = Option.when(lanes(wide.size))(BvhLanes(wide, prims))
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)

@@ -19,3 +19,15 @@ object LaneSupport:
 
   /** True when the walks use [[Lanes]]. */
   val enabled: Boolean = available && sys.props.get("tracer.lanes").contains("on")
+
+  /** The fewest wide nodes of a tree walked with [[Lanes]]. */
+  val MinNodes = 16
+
+  /** True when a tree of `nodes` wide nodes is worth walking with [[Lanes]]: a walk of a few
+    * nodes gains little from testing four boxes at once, and until C2 compiles it the vector walk
+    * is far slower than the scalar one (4K few-object scene, docs/performance.md, round 15).
+    */
+  def worth(nodes: Int): Boolean = nodes >= MinNodes
+
+  /** Whether a tree of `nodes` wide nodes walks with [[Lanes]]: when [[enabled]] and [[worth]]. */
+  def choose(nodes: Int): Boolean = enabled && worth(nodes)

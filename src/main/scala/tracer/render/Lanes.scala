@@ -13,7 +13,7 @@ import jdk.incubator.vector.{DoubleVector, VectorOperators, VectorSpecies}
   * blend per plane in the scalar test's order, not by `min` and `max` (which differ on NaN, from
   * 0 × ∞, and on −0.0). So every entry distance is the scalar test's bit for bit, and the hit
   * children are pushed in the scalar loop's order: the walks give the same answers
-  * (`LanesProperties`).
+  * (`BvhProperties`, `MeshProperties`).
   *
   * Perf: a node's 24 plane tests in six vector subtractions and multiplications and the twelve
   * steps of the nearest and farthest planes in compares and blends, instead of four rounds of the

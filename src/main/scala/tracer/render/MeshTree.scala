@@ -17,13 +17,14 @@ import tracer.geometry.Mesh
   *
   * @param mesh the mesh
   * @param pool where to build the tree: the render's threads, or this one for `None`
-  * @param lanes walk with the Vector API's four-box test ([[MeshLanes]]) instead of one box at a
-  *   time: the same answers (`LanesProperties`); only where [[LaneSupport.enabled]]
+  * @param lanes whether a tree of so many wide nodes walks with the Vector API's four-box test
+  *   ([[MeshLanes]]) instead of one box at a time: the same answers (`MeshProperties`); by
+  *   default [[LaneSupport.choose]]
   */
 final class MeshTree(
     mesh: Mesh,
     pool: Option[ExecutionContext] = None,
-    lanes: Boolean = LaneSupport.enabled
+    lanes: Int => Boolean = LaneSupport.choose
 ):
   // The binary tree is dropped once collapsed: the queries walk the wide one.
   private val (wide, faces) = MeshTree.wideTree(mesh, pool)
@@ -36,7 +37,9 @@ final class MeshTree(
   private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
   // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
   private val fast: Option[MeshLanes] =
-    Option.when(lanes)(MeshLanes(wide, faces, planes, at, vertices))
+    Option.when(lanes(wide.size))(
+      MeshLanes(wide, faces, planes, at, vertices)
+    )
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size

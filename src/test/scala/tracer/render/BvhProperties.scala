@@ -254,8 +254,9 @@ class BvhProperties extends ScalaCheckSuite:
     val shapes =
       Gen.choose(0, 200).flatMap(n => Gen.listOfN(n, Gen.frequency(3 -> shape, 1 -> general)))
     forAll(shapes, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (s, rays, limit) =>
-      val (lanes, plain) = (Bvh(s.toIndexedSeq, lanes = true), Bvh(s.toIndexedSeq, lanes = false))
-      val (q1, q2)       = (Query(), Query())
+      val (lanes, plain) =
+        (Bvh(s.toIndexedSeq, lanes = _ => true), Bvh(s.toIndexedSeq, lanes = _ => false))
+      val (q1, q2) = (Query(), Query())
       rays.foreach { r =>
         val (o, d) = (r.origin, r.direction)
         val i      = lanes.nearest(o.x, o.y, o.z, d.x, d.y, d.z, limit, Int.MaxValue, q1)

@@ -220,7 +220,7 @@ class MeshProperties extends ScalaCheckSuite:
   property("the four-box walks (Lanes) answer as the one-box walks, bit for bit"):
     assume(LaneSupport.available, "the test JVM runs with --add-modules jdk.incubator.vector")
     forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 30.0)) { case ((m, rs), l) =>
-      val (lanes, plain) = (MeshTree(m, lanes = true), MeshTree(m, lanes = false))
+      val (lanes, plain) = (MeshTree(m, lanes = _ => true), MeshTree(m, lanes = _ => false))
       val (q1, q2)       = (Query(), Query())
       rs.foreach { r =>
         val (o, d) = (r.origin, r.direction)
