@@ -7,13 +7,16 @@ package tracer.render
   * four doubles in a vector register. Otherwise, and on every JVM without the module, the walks
   * test one box at a time ([[WideWalk.push]]); the answers are the same either way.
   *
-  * This object never touches the module's classes itself, so it loads on every JVM.
+  * This object asks for the module's classes (through [[Lanes]]) only once it has found the
+  * module, so it loads on every JVM.
   */
 object LaneSupport:
   /** The name of the Vector API's module. */
   val Module = "jdk.incubator.vector"
 
-  /** True when this JVM has the Vector API's module (whether or not it is asked for). */
+  /** True when this JVM has the Vector API's module and the processor four doubles a vector
+    * (whether or not they are asked for).
+    */
   val available: Boolean =
     ModuleLayer.boot().findModule(Module).isPresent && Lanes.wideEnough
 
