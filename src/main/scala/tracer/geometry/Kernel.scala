@@ -21,6 +21,12 @@ final class CrossingBuffer:
   /** The root finder's scratch: four levels of coefficients, roots and ends (Polynomial). */
   private[geometry] val roots = new Array[Double](Polynomial.ScratchSize)
 
+  /** The distance t of crossing `k`, as [[Kernel.collect]] wrote it. */
+  def distanceAt(k: Int): Double = t(k)
+
+  /** The leaf of crossing `k` (see [[Hit.leaf]]), as [[Kernel.collect]] wrote it. */
+  def leafAt(k: Int): Int = leaf(k)
+
   /** Room for crossings up to index `n` (exclusive). */
   private[geometry] def ensure(n: Int): Unit =
     if n > t.length then

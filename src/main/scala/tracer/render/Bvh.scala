@@ -16,16 +16,18 @@ import tracer.geometry.{Mesh, Shape}
   * @param lanes  whether a tree of so many wide nodes walks with the Vector API's four-box test
   *   ([[BvhLanes]]): the same answers (`BvhProperties`); by default [[LaneSupport.choose]]. Its
   *   meshes choose for themselves.
+  * @param known  the trees already built for some of its meshes (another hierarchy's), reused
   */
 final class Bvh(
     shapes: IndexedSeq[Shape],
     pool: Option[ExecutionContext] = None,
-    lanes: Int => Boolean = LaneSupport.choose
+    lanes: Int => Boolean = LaneSupport.choose,
+    known: Mesh => Option[MeshTree] = _ => None
 ):
   private val tree  = BvhBuilder(shapes).build(pool)
   private val boxes = tree.boxes
   private val links = tree.links
-  private val prims = Primitives(shapes, tree.order, pool)
+  private val prims = Primitives(shapes, tree.order, pool, known)
   private val wide  = WideTree.collapse(tree)
   private val wb    = wide.boxes
   private val wc    = wide.child

@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Plane, Ray, Shape}
+import tracer.geometry.{Kernel, Plane, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.AreaLight
 
@@ -36,6 +36,21 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   // anything blocks them: the first blocker found ends a ray, as in a world without glass (a
   // walk would stop at the nearest opaque hit with the same share, 0; docs/performance.md, round 12).
   private var opaqueBeam = true
+  // Perf: in a world that clearWalks, the beam's shapes parted: the opaque ones (`solid`, by
+  // index, `solidCount` of them) tested for any hit, the clear ones (`clear`, by their place in
+  // world.clearShapes) weighed from their crossings, collected once a ray (docs/performance.md,
+  // round 16).
+  private val parted     = world.clearWalks && beam.length > 0
+  private val solid      = new Array[Int](if parted then world.size else 0)
+  private var solidCount = 0
+  private val clear      = new Array[Int](if parted then world.clearShapes.length else 0)
+  private var clearCount = 0
+  // Perf: the crossings of a shadow ray's clear shapes, those of the j-th tested at
+  // starts(j) until ends(j); `everyClear` lists all of world.clearShapes, for the tree's rays.
+  private val crossed    = tracer.geometry.CrossingBuffer()
+  private val starts     = new Array[Int](world.clearShapes.length)
+  private val ends       = new Array[Int](world.clearShapes.length)
+  private val everyClear = Array.range(0, world.clearShapes.length)
   private val axes       = new Array[Double](21)
   private val low        = new Array[Double](7)
   private val high       = new Array[Double](7)
@@ -170,11 +185,75 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       reach: Double
   ): Double =
     if inBeam >= 0 then
-      if opaqueBeam then if blockedInBeam(fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
+      if opaqueBeam then
+        if blockedAmong(beam, inBeam, fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
+      else if parted then
+        if blockedAmong(solid, solidCount, fx, fy, fz, dx, dy, dz, reach) then 0.0
+        else clearShare(clear, clearCount, fx, fy, fz, dx, dy, dz, reach)
       else walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
     else if !world.transmits then
       if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
+    else if world.clearWalks then
+      if world.opaqueAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+      else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
     else transmittanceByWalk(fx, fy, fz, dx, dy, dz, reach)
+
+  /** The share let through by the clear shapes `list(0 until count)` (places in
+    * `world.clearShapes`) along the ray from f in unit direction d before `reach`, when no opaque
+    * shape blocks it: the product of the `transmit` of the surfaces it crosses, walking from
+    * crossing to crossing, each next one looked for beyond ε past the last (of equal distances,
+    * the lower index's), as [[walk]] does.
+    *
+    * Perf: each shape's crossings along the whole ray are collected once and read in order, where
+    * the walk tested every shape again after each surface: a glass tumbler four times more
+    * (docs/performance.md, round 16).
+    */
+  private def clearShare(
+      list: Array[Int],
+      count: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    val shapes = world.clearShapes
+    // Why: the crossings written so far, shape after shape.
+    var end = 0
+    var j   = 0
+    while j < count do
+      starts(j) = end
+      if met(world.clearBoxes, 6 * list(j), fx, fy, fz, dx, dy, dz, reach) then
+        end =
+          Kernel.collect(world.shape(shapes(list(j))), fx, fy, fz, dx, dy, dz, crossed, end, false)
+      ends(j) = end
+      j += 1
+    // Why: the share so far, and the distance up to which crossings are behind the walk.
+    var share  = 1.0
+    var walked = 0.0
+    var more   = end > 0
+    while more && share > 0 do
+      var best  = -1
+      var bestT = reach
+      j = 0
+      while j < count do
+        // Each shape's crossings come in increasing t: skip those behind.
+        var k = starts(j)
+        while k < ends(j) && crossed.distanceAt(k) <= walked do k += 1
+        starts(j) = k
+        if k < ends(j) && crossed.distanceAt(k) < bestT then
+          best = j
+          bestT = crossed.distanceAt(k)
+        j += 1
+      if best < 0 then more = false
+      else
+        val i    = shapes(list(best))
+        val leaf = if world.hasLeafSurfaces(i) then crossed.leafAt(starts(best)) else 0
+        share *= world.surface(i, leaf).transmit
+        walked = bestT + Shading.Epsilon
+    share
 
   /** The product of the `transmit` of every surface the ray from `from` in direction d crosses
     * before `reach`, walking from hit to hit; 0 as soon as an opaque one is found.
@@ -253,8 +332,12 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     query.distance = if best < 0 then Double.PositiveInfinity else bestT
     best
 
-  /** As `world.occludedAlong` among the beam's shapes: some shape hit at 0 < t < `limit`. */
-  private def blockedInBeam(
+  /** As `world.occludedAlong` among the shapes `list(0 until count)`: some shape hit at
+    * 0 < t < `limit`.
+    */
+  private def blockedAmong(
+      list: Array[Int],
+      count: Int,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -265,10 +348,10 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   ): Boolean =
     // Perf: as nearestInBeam, stopping at the first blocker.
     var j = 0
-    while j < inBeam && !(enters(beam(j), ox, oy, oz, dx, dy, dz, limit) &&
-        Primitives.blocks(world.each, beam(j), limit, ox, oy, oz, dx, dy, dz, query))
+    while j < count && !(enters(list(j), ox, oy, oz, dx, dy, dz, limit) &&
+        Primitives.blocks(world.each, list(j), limit, ox, oy, oz, dx, dy, dz, query))
     do j += 1
-    j < inBeam
+    j < count
 
   /** False when the ray cannot meet shape `i` at t ≤ `limit`: for a shape of the general route
     * or a mesh, its widened box missed (the slab test; NaN from an origin on a slab's plane
@@ -285,38 +368,51 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       limit: Double
   ): Boolean =
     val kind = world.each.kind(i)
-    if kind == Primitives.SphereKind || kind == Primitives.TriangleKind || kind == Primitives.PlaneKind
-    then true
+    kind == Primitives.SphereKind || kind == Primitives.TriangleKind ||
+    kind == Primitives.PlaneKind || met(world.boxes, 6 * i, ox, oy, oz, dx, dy, dz, limit)
+
+  /** False when the ray misses the box of six doubles at `at` of `b` (lo then hi; NaN for no
+    * bounds: always met) at 0 ≤ t ≤ `limit`: the slab test, NaN from an origin on a slab's plane
+    * counting as inside.
+    */
+  private inline def met(
+      b: Array[Double],
+      at: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double
+  ): Boolean =
+    if b(at).isNaN then true
     else
-      val b  = world.boxes
-      val at = 6 * i
-      if b(at).isNaN then true
-      else
-        val ix = 1 / dx
-        val iy = 1 / dy
-        val iz = 1 / dz
-        val ax = (b(at) - ox) * ix
-        val bx = (b(at + 3) - ox) * ix
-        val ay = (b(at + 1) - oy) * iy
-        val by = (b(at + 4) - oy) * iy
-        val az = (b(at + 2) - oz) * iz
-        val bz = (b(at + 5) - oz) * iz
-        // Why: the ray's interval inside the box, narrowed axis by axis (NaN leaves it alone).
-        var near = 0.0
-        var far  = limit
-        val nx   = Math.min(ax, bx)
-        val fx   = Math.max(ax, bx)
-        if nx > near then near = nx
-        if fx < far then far = fx
-        val ny = Math.min(ay, by)
-        val fy = Math.max(ay, by)
-        if ny > near then near = ny
-        if fy < far then far = fy
-        val nz = Math.min(az, bz)
-        val fz = Math.max(az, bz)
-        if nz > near then near = nz
-        if fz < far then far = fz
-        near <= far
+      val ix = 1 / dx
+      val iy = 1 / dy
+      val iz = 1 / dz
+      val ax = (b(at) - ox) * ix
+      val bx = (b(at + 3) - ox) * ix
+      val ay = (b(at + 1) - oy) * iy
+      val by = (b(at + 4) - oy) * iy
+      val az = (b(at + 2) - oz) * iz
+      val bz = (b(at + 5) - oz) * iz
+      // Why: the ray's interval inside the box, narrowed axis by axis (NaN leaves it alone).
+      var near = 0.0
+      var far  = limit
+      val nx   = Math.min(ax, bx)
+      val fx   = Math.max(ax, bx)
+      if nx > near then near = nx
+      if fx < far then far = fx
+      val ny = Math.min(ay, by)
+      val fy = Math.max(ay, by)
+      if ny > near then near = ny
+      if fy < far then far = fy
+      val nz = Math.min(az, bz)
+      val fz = Math.max(az, bz)
+      if nz > near then near = nz
+      if fz < far then far = fz
+      near <= far
 
   /** Aims the beam from (fx, fy, fz) at the sub-lights `positions` of `light`: keeps in
     * [[beam]] the shapes that a segment from the point to a sub-light may meet.
@@ -363,15 +459,30 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       a += 1
     var count  = 0
     var opaque = true
+    // Why: the beam's opaque and clear shapes, and the place in world.clearShapes of the next.
+    var solids = 0
+    var clears = 0
+    var place  = 0
     var i      = 0
     while i < world.size do
+      val through = world.letsThrough(i)
       if mayMeet(i, fx, fy, fz, positions, scale) then
         beam(count) = i
         count += 1
-        opaque = opaque && !world.letsThrough(i)
+        opaque = opaque && !through
+        if parted then
+          if through then
+            clear(clears) = place
+            clears += 1
+          else
+            solid(solids) = i
+            solids += 1
+      if through then place += 1
       i += 1
     inBeam = count
     opaqueBeam = opaque
+    solidCount = solids
+    clearCount = clears
 
   /** Axis `a` of the beam: (x, y, z). */
   private inline def axis(a: Int, x: Double, y: Double, z: Double): Unit =

@@ -71,15 +71,35 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   // size (as the tree rounds its boxes outwards to floats); a shape without bounds has NaN (a
   // plane is then tested by its side, anything else always kept).
   private[render] val boxes: Array[Double] =
-    if !beams then Array.emptyDoubleArray
-    else
-      shapes.flatMap(s =>
-        Shape.bounds(s).fold(Array.fill(6)(Double.NaN)) { b =>
-          val size = 1 + Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z).map(Math.abs).max
-          val m    = 1e-7 * size
-          Array(b.lo.x - m, b.lo.y - m, b.lo.z - m, b.hi.x + m, b.hi.y + m, b.hi.z + m)
-        }
-      )
+    if !beams then Array.emptyDoubleArray else shapes.flatMap(World.widenedBox)
+
+  /** The shapes that let light through, in index order. */
+  private[render] val clearShapes: Array[Int] = shapes.indices.filter(letThrough).toArray
+
+  /** True when shadow rays weigh the clear shapes from the crossings each gives along the whole
+    * ray, tested once ([[Shadows]]), after an any-hit test of the opaque shapes alone: a world
+    * that transmits, none of whose clear shapes is a mesh (whose crossings would be all its
+    * faces'; such a world walks from hit to hit in the world's tree).
+    */
+  val clearWalks: Boolean = transmits && clearShapes.forall(i =>
+    shapes(i) match
+      case _: Mesh => false
+      case _       => true
+  )
+
+  // Each clear shape's box, widened as `boxes` (NaN for an unbounded one), at 6j for clearShapes(j).
+  private[render] val clearBoxes: Array[Double] =
+    if !clearWalks then Array.emptyDoubleArray
+    else clearShapes.flatMap(i => World.widenedBox(shapes(i)))
+
+  // The opaque shapes on their own, for the any-hit test of clearWalks: a hierarchy of the bounded
+  // ones (sharing the meshes' trees with the whole world's) and the unbounded ones.
+  private val opaqueIndex = shapes.indices.filterNot(letThrough)
+  private val opaqueTree  =
+    Option.when(clearWalks)(Bvh(opaqueIndex.map(shapes), pool, known = bvh.meshTree))
+  private val opaqueUnbounded = opaqueTree.fold(Primitives(IndexedSeq.empty, Array.emptyIntArray)) {
+    t => Primitives(opaqueIndex.map(shapes), t.unbounded)
+  }
 
   /** The number of shapes. */
   def size: Int = shapes.length
@@ -223,6 +243,27 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
     do k += 1
     k < unbounded.size || bvh.occluded(ox, oy, oz, dx, dy, dz, limit, query)
 
+  /** As [[occludedAlong]] among the shapes that let no light through (only in a world that
+    * [[clearWalks]]; elsewhere false).
+    */
+  def opaqueAlong(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    // Perf: as occludedAlong.
+    var k = 0
+    while k < opaqueUnbounded.size &&
+      !(Primitives.distance(opaqueUnbounded, k, limit, ox, oy, oz, dx, dy, dz, query) < limit)
+    do k += 1
+    k < opaqueUnbounded.size ||
+    opaqueTree.exists(_.occluded(ox, oy, oz, dx, dy, dz, limit, query))
+
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).
     */
@@ -240,6 +281,16 @@ object World:
     * shape in the beam ([[World.beams]]): beyond it the tree's walk is the better cull.
     */
   val BeamShapes: Int = 64
+
+  /** The shape's bounds as six doubles, lo then hi, widened by 10⁻⁷ of their coordinates' size
+    * (as the tree rounds its boxes outwards to floats); NaN for a shape without bounds.
+    */
+  private def widenedBox(shape: Shape): Array[Double] =
+    Shape.bounds(shape).fold(Array.fill(6)(Double.NaN)) { b =>
+      val size = 1 + Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z).map(Math.abs).max
+      val m    = 1e-7 * size
+      Array(b.lo.x - m, b.lo.y - m, b.lo.z - m, b.hi.x + m, b.hi.y + m, b.hi.z + m)
+    }
 
   /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
   private def positions(centre: Vec3, light: tracer.scene.AreaLight): IArray[Double] =

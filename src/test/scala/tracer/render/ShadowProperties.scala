@@ -10,6 +10,7 @@ import tracer.geometry.{
   Cylinder,
   Placed,
   Plane,
+  Ray,
   Shape,
   Sphere,
   Torus,
@@ -139,3 +140,51 @@ class ShadowProperties extends ScalaCheckSuite:
         )
       )
       agree(w, List(Vec3.Zero, Vec3(0, 1e-4, 0), Vec3(0.01, 0, 0)))
+
+  /** The share by definition (docs/rendering.md, Shadows): 0 when an opaque shape is met at
+    * 0 < t < `reach`; otherwise every clear shape's crossings along the whole ray in order (of
+    * equal ts the lower index's), each counted when beyond ε past the last one counted.
+    */
+  private def defined(objects: List[SceneObject], from: Vec3, d: Vec3, reach: Double): Double =
+    val ray             = Ray(from, d)
+    val (clear, opaque) = objects.partition(_.surfaces.exists(_.transmit > 0))
+    if opaque.exists(o => Shape.distance(o.shape, ray) < reach) then 0.0
+    else
+      val crossings = clear.zipWithIndex
+        .flatMap((o, j) => Shape.crossings(o.shape, ray).map(c => (c.t, j, o.surfaceOf(c.leaf))))
+        .sortBy((t, j, _) => (t, j))
+      crossings
+        .foldLeft((1.0, 0.0)) { case ((share, walked), (t, _, surface)) =>
+          if t > walked && t < reach then (share * surface.transmit, t + Shading.Epsilon)
+          else (share, walked)
+        }
+        ._1
+
+  property("a point light's share: opaque shapes block, clear ones dim by each crossing"):
+    val objects = Gen.listOfN(12, Gen.frequency(5 -> plain, 1 -> mixed))
+    forAll(objects, Gen.listOfN(30, Gen.zip(from, point))) { (objects, rays) =>
+      val w       = World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = objects))
+      val shadows = Shadows(w, w.newQuery())
+      assert(!w.transmits || w.clearWalks)
+      rays.foreach { (p, to) =>
+        (to - p).normalised.foreach { d =>
+          val reach = (to - p).length
+          val share = shadows.point(p, d, reach)
+          assertEquals(bits(share), bits(defined(objects, p, d, reach)), s"from $p to $to")
+        }
+      }
+    }
+
+  test("an opaque surface blocks the light even where a clear one lies on it"):
+    // A clear pane and an opaque one in the same plane z = 2, the clear one first: the walk from
+    // hit to hit would count the clear one and step past the other.
+    def pane(transmit: Double) = SceneObject(
+      Triangle(Vec3(-5, -5, 2), Vec3(5, -5, 2), Vec3(0, 5, 2)),
+      Surface(transmit = transmit)
+    )
+    val w = World(
+      Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = List(pane(0.5), pane(0.0)))
+    )
+    assert(w.clearWalks)
+    assertEquals(Shadows(w, w.newQuery()).point(Vec3.Zero, Vec3.UnitZ, 10), 0.0)
+    assertEquals(Shadows(w, w.newQuery()).point(Vec3.Zero, -Vec3.UnitZ, 10), 1.0)
