@@ -143,8 +143,12 @@ object Kernel:
     case c: Csg  =>
       if first(c, ox, oy, oz, dx, dy, dz, buffer, 0, cutoff, normals = false) > 0 then buffer.t(0)
       else Double.PositiveInfinity
-    case other: (Box | Torus) =>
-      if collect(other, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false) > 0 then buffer.t(0)
+    case t: Torus =>
+      if torus(t, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false, firstOnly = true) > 0 then
+        buffer.t(0)
+      else Double.PositiveInfinity
+    case b: Box =>
+      if collect(b, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false) > 0 then buffer.t(0)
       else Double.PositiveInfinity
 
   /** The first of [[Shape.crossings]] of `shape` (the one [[Shape.hitAt]] reports: its t, outward
@@ -172,7 +176,11 @@ object Kernel:
         val end = firstCrossing(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from)
         broughtBack(p.back, s, buffer, from, end, normals = true)
       }
-    case other: (Sphere | Plane | Triangle | Mesh | Box | Cone | Torus) =>
+    case t: Torus =>
+      if torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals = true, firstOnly = true) > from
+      then from + 1
+      else from
+    case other: (Sphere | Plane | Triangle | Mesh | Box | Cone) =>
       if collect(other, ox, oy, oz, dx, dy, dz, buffer, from) > from then from + 1 else from
 
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
@@ -650,7 +658,9 @@ object Kernel:
     else Double.PositiveInfinity
 
   /** Solids.torusCrossings: the quartic's roots on the part of the ray inside the bounding
-    * sphere, from a point moved up to it, found by [[Polynomial.rootsInto]].
+    * sphere, from a point moved up to it, found by [[Polynomial.rootsInto]]; with `firstOnly`,
+    * the first crossing alone (Perf: a distance or a first crossing looks for no later root;
+    * docs/performance.md, round 16).
     */
   private def torus(
       tr: Torus,
@@ -662,7 +672,8 @@ object Kernel:
       dz: Double,
       buffer: CrossingBuffer,
       from: Int,
-      normals: Boolean
+      normals: Boolean,
+      firstOnly: Boolean = false
   ): Int =
     val outer = tr.major + tr.minor
     val tca   = -(ox * dx + oy * dy + oz * dz)
@@ -687,7 +698,12 @@ object Kernel:
         c(2) = h * h + 2 * i - 4 * r2 * j
         c(3) = 2 * h
         c(4) = 1.0
-        val n = Polynomial.rootsInto(c, 0, 5, 0, stop, Polynomial.ScratchLevel)
+        val level = Polynomial.ScratchLevel
+        val first = if firstOnly then Polynomial.rootsInto(c, 0, 5, 0, stop, level, 1) else 0
+        // A first root at t = 0 (the ray starts on the torus) is no crossing: all are looked for.
+        val n =
+          if firstOnly && (first == 0 || c(level + Polynomial.RootsAt) + shift > 0) then first
+          else Polynomial.rootsInto(c, 0, 5, 0, stop, level)
         // Why: a loop over the roots just found, written as crossings in order.
         var out = from
         var m   = 0

@@ -56,8 +56,17 @@ object Polynomial:
   /** [[roots]] on a scratch array, bit for bit: the polynomial's `len` coefficients are at
     * `s(at until at + len)`, its roots in [lo, hi] are written at `s(out + RootsAt …)` in
     * increasing order, and their number is returned; the levels below use `s` from `out` on.
+    * With `wanted` below the degree, only the first `wanted` roots are looked for (the same bits).
     */
-  def rootsInto(s: Array[Double], at: Int, len: Int, lo: Double, hi: Double, out: Int): Int =
+  def rootsInto(
+      s: Array[Double],
+      at: Int,
+      len: Int,
+      lo: Double,
+      hi: Double,
+      out: Int,
+      wanted: Int = Int.MaxValue
+  ): Int =
     // Perf: the recursion of `roots` without an IArray, list or option per level; run for every
     // ray that meets a torus's bounding sphere (Kernel, SolidsBench).
     var n = len - 1
@@ -85,7 +94,7 @@ object Polynomial:
       s(ends + m + 1) = hi
       var found = 0
       k = 0
-      while k <= m do
+      while k <= m && found < wanted do
         val x = rootOn(s, at, len, n, s(ends + k), s(ends + k + 1))
         if !x.isNaN then
           // `distinct`: a root already found (the same bits) is not written again.

@@ -206,3 +206,28 @@ class KernelProperties extends ScalaCheckSuite:
         val found = (0 until n).map(k => bits(s(Polynomial.ScratchLevel + Polynomial.RootsAt + k)))
         assertEquals(found.toList, Polynomial.roots(IArray.from(c), lo, hi).map(bits))
     }
+
+  property("rootsInto with `wanted` roots finds the first of them, bit for bit"):
+    val coefficient = Gen.frequency(4 -> Gen.choose(-10.0, 10.0), 1 -> Gen.const(0.0))
+    forAll(Gen.listOfN(5, coefficient), Gen.choose(0.0, 5.0), Gen.choose(1, 3)) { (c, hi, wanted) =>
+      val s = new Array[Double](Polynomial.ScratchSize)
+      c.zipWithIndex.foreach((x, k) => s(k) = x)
+      val n     = Polynomial.rootsInto(s, 0, 5, 0, hi, Polynomial.ScratchLevel, wanted)
+      val found = (0 until n).map(k => bits(s(Polynomial.ScratchLevel + Polynomial.RootsAt + k)))
+      assertEquals(found.toList, Polynomial.roots(IArray.from(c), 0, hi).map(bits).take(wanted))
+    }
+
+  property("polynomials with known roots: each found within 1e-9"):
+    // (x − r1)(x − r2)(x − r3)(x − r4) on [0, 10], its roots apart by more than 0.1.
+    val root = Gen.choose(0.05, 9.95)
+    forAll(Gen.listOfN(4, root).suchThat(r => r.sorted.sliding(2).forall(p => p(1) - p(0) > 0.1))) {
+      rs =>
+        val c = rs.foldLeft(IArray(1.0)) { (p, r) =>
+          IArray.tabulate(p.length + 1)(k =>
+            (if k > 0 then p(k - 1) else 0.0) - r * (if k < p.length then p(k) else 0.0)
+          )
+        }
+        val found = Polynomial.roots(c, 0, 10)
+        assertEquals(found.length, 4, s"$rs: $found")
+        found.zip(rs.sorted).foreach((x, r) => assert(Math.abs(x - r) < 1e-9, s"$x for $r"))
+    }
