@@ -185,19 +185,43 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       dz: Double,
       reach: Double
   ): Double =
+    // Perf: the opaque cases here, the clear ones in methods of their own, so this one stays
+    // small enough for the JIT to inline into its callers (showcase: 2.5% slower otherwise).
     if inBeam >= 0 then
       if opaqueBeam then
         if blockedAmong(beam, inBeam, fx, fy, fz, dx, dy, dz, reach) then 0.0 else 1.0
-      else if parted then
-        if blockedAmong(solid, solidCount, fx, fy, fz, dx, dy, dz, reach) then 0.0
-        else clearShare(clear, clearCount, fx, fy, fz, dx, dy, dz, reach)
-      else walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
+      else throughBeam(fx, fy, fz, dx, dy, dz, reach)
     else if !world.transmits then
       if world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
-    else if world.clearWalks then
-      if world.opaqueAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0
-      else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
-    else transmittanceByWalk(fx, fy, fz, dx, dy, dz, reach)
+    else throughWorld(fx, fy, fz, dx, dy, dz, reach)
+
+  /** [[pointAlong]] in a beam that holds clear shapes. */
+  private def throughBeam(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    if !parted then walk(fx, fy, fz, dx, dy, dz, reach, inBeamOnly = true)
+    else if blockedAmong(solid, solidCount, fx, fy, fz, dx, dy, dz, reach) then 0.0
+    else clearShare(clear, clearCount, fx, fy, fz, dx, dy, dz, reach)
+
+  /** [[pointAlong]] without a beam in a world that transmits. */
+  private def throughWorld(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    if !world.clearWalks then transmittanceByWalk(fx, fy, fz, dx, dy, dz, reach)
+    else if world.opaqueAlong(fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+    else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
 
   /** The share let through by the clear shapes `list(0 until count)` (places in
     * `world.clearShapes`) along the ray from f in unit direction d before `reach`, when no opaque
