@@ -87,6 +87,10 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
       case _       => true
   )
 
+  // Each clear shape's transmit, at j for clearShapes(j): NaN for one that shows a surface per leaf.
+  private[render] val clearTransmits: Array[Double] =
+    clearShapes.map(i => if hasLeafSurfaces(i) then Double.NaN else surfaces(i).transmit)
+
   // Each clear shape's box, widened as `boxes` (NaN for an unbounded one), at 6j for clearShapes(j).
   private[render] val clearBoxes: Array[Double] =
     if !clearWalks then Array.emptyDoubleArray
