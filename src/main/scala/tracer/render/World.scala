@@ -265,8 +265,10 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
     while k < opaqueUnbounded.size &&
       !(Primitives.distance(opaqueUnbounded, k, limit, ox, oy, oz, dx, dy, dz, query) < limit)
     do k += 1
-    k < opaqueUnbounded.size ||
-    opaqueTree.exists(_.occluded(ox, oy, oz, dx, dy, dz, limit, query))
+    // Why: a match, not `exists`, whose closure the code before C2 made for every ray (JFR).
+    k < opaqueUnbounded.size || (opaqueTree match
+      case Some(tree) => tree.occluded(ox, oy, oz, dx, dy, dz, limit, query)
+      case None       => false)
 
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).
