@@ -151,6 +151,47 @@ object Kernel:
       if collect(b, ox, oy, oz, dx, dy, dz, buffer, 0, normals = false) > 0 then buffer.t(0)
       else Double.PositiveInfinity
 
+  /** True when [[distance]] of `shape` with cutoff `limit` is below `limit` (a shadow ray's
+    * test): the same answer, but a union stops at its first child below the limit, and a
+    * combination (placed or not) at its first crossing found below it, not the nearest: a kept
+    * crossing is on the whole's surface, so the nearest is no farther (Perf: round 16).
+    */
+  def blocks(
+      shape: Shape,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      buffer: CrossingBuffer,
+      limit: Double
+  ): Boolean = shape match
+    case c: Csg if c.operation == CsgOperation.Union =>
+      // Perf: distance's loop over the children, ending at the first below the limit.
+      val ix = 1 / dx
+      val iy = 1 / dy
+      val iz = 1 / dz
+      var i  = 0
+      while i < c.parts.length &&
+        !(boxEntry(c.partBoxes, 6 * i, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity &&
+          blocks(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, limit))
+      do i += 1
+      i < c.parts.length
+    case c: Csg =>
+      first(c, ox, oy, oz, dx, dy, dz, buffer, 0, limit, normals = false, limit, 1.0) > 0 &&
+      buffer.t(0) < limit
+    case p: Placed =>
+      p.shape match
+        case c: Csg if c.operation != CsgOperation.Union =>
+          ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
+            val cut = within(limit, s)
+            first(c, lox, loy, loz, ldx, ldy, ldz, buffer, 0, cut, normals = false, limit, s) > 0 &&
+            buffer.t(0) / s < limit
+          }
+        case _ => distance(p, ox, oy, oz, dx, dy, dz, buffer, limit) < limit
+    case other => distance(other, ox, oy, oz, dx, dy, dz, buffer, limit) < limit
+
   /** The first of [[Shape.crossings]] of `shape` (the one [[Shape.hitAt]] reports: its t, outward
     * normal and leaf, bit for bit) written into `buffer` at `from`; returns `from + 1`, or `from`
     * when the ray crosses nothing. Crossing `from + 1` on may be overwritten.
@@ -815,7 +856,8 @@ object Kernel:
   /** The first of [[combination]]'s crossings at t ≤ `limit`, written at `from` (returns
     * `from + 1`), or none (returns `from`): each child's crossings in increasing t up to its first
     * kept one or the best so far, so later crossings need no inside tests and nothing is sorted.
-    * Of equal ts the first child's wins, as in the stable sort.
+    * Of equal ts the first child's wins, as in the stable sort. A kept crossing at t with
+    * t / `stretch` < `below` ends the search there ([[blocks]]; by default none does).
     */
   private def first(
       c: Csg,
@@ -828,7 +870,9 @@ object Kernel:
       buffer: CrossingBuffer,
       from: Int,
       limit: Double,
-      normals: Boolean
+      normals: Boolean,
+      below: Double = Double.NegativeInfinity,
+      stretch: Double = 1.0
   ): Int =
     val ix   = 1 / dx
     val iy   = 1 / dy
@@ -857,6 +901,8 @@ object Kernel:
                 buffer.nz(from) = -buffer.nz(from)
               buffer.leaf(from) = buffer.leaf(from) + c.partLeaves(i)
               k = end
+              // A shadow ray's test needs no nearer crossing than one below its limit.
+              if t / stretch < below then i = c.parts.length
             else k += 1
         i += 1
       if best < Double.PositiveInfinity then from + 1 else from

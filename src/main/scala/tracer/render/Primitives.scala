@@ -109,6 +109,7 @@ object Primitives:
   private[render] val TriangleKind: Byte = Route.FastTriangle.ordinal.toByte
   private[render] val PlaneKind: Byte    = Route.FastPlane.ordinal.toByte
   private[render] val MeshKind: Byte     = Route.FastMesh.ordinal.toByte
+  private[render] val GeneralKind: Byte  = Route.General.ordinal.toByte
 
   /** Writes what the leaf test of `shape` reads into `data` from `at`, and returns its route.
     *
@@ -178,9 +179,27 @@ object Primitives:
       dz: Double,
       query: Query
   ): Boolean =
-    if p.kind(k) == MeshKind then
+    val kd = p.kind(k)
+    if kd == MeshKind then
       p.meshes(p.data(Stride * k).toInt).occluded(ox, oy, oz, dx, dy, dz, limit, query)
+    else if kd == GeneralKind then
+      generalBlocks(p.all(p.index(k)), limit, ox, oy, oz, dx, dy, dz, query.crossings)
     else distance(p, k, limit, ox, oy, oz, dx, dy, dz, query) < limit
+
+  /** The general route's shadow test: [[tracer.geometry.Kernel.blocks]] (the same answer as
+    * [[general]] `< limit`, a combination stopping at its first crossing below the limit).
+    */
+  private def generalBlocks(
+      shape: Shape,
+      limit: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      buffer: CrossingBuffer
+  ): Boolean = Kernel.blocks(shape, ox, oy, oz, dx, dy, dz, buffer, limit)
 
   /** The general route: [[tracer.geometry.Shape.distance]], bit for bit, from the solids' kernel
     * on plain doubles ([[tracer.geometry.Kernel]]): no `Ray`, list or tuple per test; a shape

@@ -140,6 +140,21 @@ class KernelProperties extends ScalaCheckSuite:
       }
     }
 
+  property("blocks is Shape.distance below the limit, the reference's own distance included"):
+    forAll(shape, Gen.listOfN(20, ray), Gen.choose(0.0, 12.0)) { (s, rays, limit) =>
+      val b = CrossingBuffer()
+      rays.foreach { r =>
+        val o    = r.origin
+        val d    = r.direction
+        val want = Shape.distance(s, r)
+        // At the reference's distance itself a shape does not block; just beyond it, it does.
+        List(limit, want, Math.nextUp(want)).filter(_ < Double.PositiveInfinity).foreach { l =>
+          val got = Kernel.blocks(s, o.x, o.y, o.z, d.x, d.y, d.z, b, l)
+          assertEquals(got, want < l, s"$s $r limit $l: the reference's distance $want")
+        }
+      }
+    }
+
   property("firstCrossing is the first of Shape.crossings: t, normal and leaf, bit for bit"):
     forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
       rays.foreach { r =>
