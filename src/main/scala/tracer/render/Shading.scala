@@ -316,11 +316,12 @@ final class Shading(world: World, mode: ShadingMode):
       blue = tb + blue
     if Math.abs(eta - 1) < Refraction.SameIndex then through(dx, dy, dz, depth)
     else
-      Refraction.refract(Vec3(dx, dy, dz), Vec3(sx, sy, sz), eta) match
-        case Some(u) => through(u.x, u.y, u.z, depth - 1)
-        case None    =>
-          val k = 2 * (sx * dx + sy * dy + sz * dz)
-          traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+      Refraction.refracted(dx, dy, dz, sx, sy, sz, eta)((ux, uy, uz) =>
+        through(ux, uy, uz, depth - 1)
+      ) {
+        val k = 2 * (sx * dx + sy * dy + sz * dz)
+        traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+      }
 
   /** The surface colour C of leaf `leaf` of shape `i` at the point p: the texel or checker cell
     * there, or the plain colour.
