@@ -10,7 +10,8 @@
 # Environment:
 #   TRACER_JAVA       the Java to run: a `java` program or the home directory of a JDK or JRE;
 #                     when unset the launcher chooses (tracer_choose_java)
-#   TRACER_JAVA_OPTS  the JVM's options, replacing the default "-Xss8m -XX:+UseSerialGC"
+#   TRACER_JAVA_OPTS  the JVM's options, replacing the default
+#                     "-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1"
 #   TRACER_CACHE      "off": no start-up cache; "cds": an AppCDS archive even on JDK 25 or newer
 #                     (for comparisons); anything else (or unset): the cache below
 #   TRACER_JDK_DIRS   where installed JDKs are looked for (default "/usr/lib/jvm"), a list
@@ -323,8 +324,12 @@ tracer_launch() {
   # The JVM's options: the serial collector, because renders make short-lived garbage fast and on
   # a small machine the serial young collection clears it as quickly as G1 or ParallelGC while
   # keeping the heap (and so the resident memory) small: a 3840x2160 render peaks at 344 MB
-  # instead of 1.1 GB (docs/performance.md). TRACER_JAVA_OPTS replaces them.
-  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC}"
+  # instead of 1.1 GB (docs/performance.md); and no loop unrolling by C2: the render's loops run a
+  # handful of times a call (a node's four children, a combination's parts), unrolling them buys
+  # nothing in the compiled code and costs compile time on the one C2 thread of a small machine,
+  # while the render waits in slower code (round 16: the gallery's solids 7% and 1280x720 few 16%
+  # sooner, steady state and 4K unchanged). TRACER_JAVA_OPTS replaces them.
+  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1}"
   case "${TRACER_LANES:-off}" in
     off) ;;
     # The walks test four boxes at once with the Vector API (docs/performance.md, round 15); its

@@ -90,7 +90,7 @@ object ManPage:
     "Java of version 17 or newer among JAVA_HOME, the \\fBjava\\fR on PATH and /usr/lib/jvm.",
     ".TP",
     ".B TRACER_JAVA_OPTS",
-    "The JVM's options, replacing the default \\-Xss8m \\-XX:+UseSerialGC.",
+    "The JVM's options, replacing the default \\-Xss8m \\-XX:+UseSerialGC \\-XX:LoopUnrollLimit=1.",
     ".TP",
     ".B TRACER_CACHE",
     "\\fBoff\\fR: start without the start-up cache. The cache is made on first use for each Java",
