@@ -97,11 +97,10 @@ object Polynomial:
       while k <= m && found < wanted do
         val x = rootOn(s, at, len, n, s(ends + k), s(ends + k + 1))
         if !x.isNaN then
-          // `distinct`: a root already found (the same bits) is not written again.
-          var j    = 0
-          val bits = java.lang.Double.doubleToLongBits(x)
-          while j < found && java.lang.Double.doubleToLongBits(s(out + RootsAt + j)) != bits do
-            j += 1
+          // `distinct`: a root already found is not written again. Equal as Scala's `==` on
+          // doubles says, as `distinct` compares them: 0.0 and -0.0 are one root.
+          var j = 0
+          while j < found && s(out + RootsAt + j) != x do j += 1
           if j == found then
             s(out + RootsAt + found) = x
             found += 1

@@ -232,6 +232,15 @@ class KernelProperties extends ScalaCheckSuite:
       assertEquals(found.toList, Polynomial.roots(IArray.from(c), 0, hi).map(bits).take(wanted))
     }
 
+  test("a double root at 0 on [0, 0] is one root, as `distinct` has it (0.0 and -0.0 alike)"):
+    // A case a random seed found: p = x², whose derivative's root is -0.0.
+    val s = new Array[Double](Polynomial.ScratchSize)
+    s(2) = 1.615990584939829e-5
+    val n     = Polynomial.rootsInto(s, 0, 5, 0, 0.0, Polynomial.ScratchLevel, 3)
+    val found = (0 until n).map(k => bits(s(Polynomial.ScratchLevel + Polynomial.RootsAt + k)))
+    assertEquals(found.toList, Polynomial.roots(IArray(0.0, 0.0, s(2), 0.0, 0.0), 0, 0.0).map(bits))
+    assertEquals(n, 1)
+
   property("polynomials with known roots: each found within 1e-9"):
     // (x − r1)(x − r2)(x − r3)(x − r4) on [0, 10], its roots apart by more than 0.1.
     val root = Gen.choose(0.05, 9.95)
