@@ -72,7 +72,7 @@ jar="$work/tracer.jar"
 cp "$home/target/scala-3.8.3/tracer.jar" "$jar"
 jvm=(-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1)
 unsafe=--sun-misc-unsafe-memory-access=allow
-quiet=(-Xlog:cds=off -Xlog:aot=off)
+quiet=(-Xlog:cds=off -Xlog:aot*=off)
 
 # The launcher's training batch: the gallery and launcher/training, each to a picture in $work.
 : >"$work/batch"
