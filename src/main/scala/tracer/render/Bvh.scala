@@ -2,6 +2,7 @@ package tracer.render
 
 import scala.concurrent.ExecutionContext
 import tracer.geometry.{Mesh, Shape}
+import tracer.math.Vec3
 
 /** A bounding volume hierarchy over the bounded shapes of a scene, built once with the binned
   * surface area heuristic ([[BvhBuilder]]) and stored as flat arrays, with its primitives in leaf
@@ -173,6 +174,84 @@ final class Bvh(
 
   /** The number of primitives in the tree's leaves, for tests. */
   def primitiveCount: Int = prims.size
+
+  /** The number of [[ShadowItems]] of its primitives: each mesh counts its faces. */
+  def itemCount: Long =
+    (0 until prims.size).iterator.map { k =>
+      if prims.kind(k) == Primitives.MeshKind then
+        prims.meshes(prims.data(Primitives.Stride * k).toInt).faceCount.toLong
+      else 1L
+    }.sum
+
+  /** Its primitives as [[ShadowItems]] for the point lights' [[LightBuffer]]s: each that is not a
+    * mesh, and each face of each mesh, with its box widened by 10⁻⁷ of its size.
+    */
+  def shadowItems: ShadowItems =
+    val n     = itemCount.toInt
+    val boxes = new Array[Double](6 * n)
+    val owner = new Array[Int](n)
+    val face  = new Array[Int](n)
+    // Why: the next item's number.
+    var i = 0
+    for k <- 0 until prims.size do
+      if prims.kind(k) == Primitives.MeshKind then
+        val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
+        for f <- 0 until mesh.faceCount do
+          mesh.faceBox(f, boxes, 6 * i)
+          owner(i) = k; face(i) = f
+          i += 1
+      else
+        // The tree holds only bounded shapes; a box without bounds would be tested on every ray.
+        val inf      = Double.PositiveInfinity
+        val (lo, hi) = Shape
+          .bounds(prims.all(prims.index(k)))
+          .fold((Vec3(-inf, -inf, -inf), Vec3(inf, inf, inf)))(b => (b.lo, b.hi))
+        boxes(6 * i) = lo.x; boxes(6 * i + 1) = lo.y; boxes(6 * i + 2) = lo.z
+        boxes(6 * i + 3) = hi.x; boxes(6 * i + 4) = hi.y; boxes(6 * i + 5) = hi.z
+        owner(i) = k; face(i) = -1
+        i += 1
+    for j <- 0 until n do
+      var size = 1.0
+      for c <- 0 until 6 do size = Math.max(size, 1 + Math.abs(boxes(6 * j + c)))
+      val m = 1e-7 * size
+      for c <- 0 until 3 do
+        boxes(6 * j + c) -= m; boxes(6 * j + 3 + c) += m
+    ShadowItems(boxes, owner, face)
+
+  /** True when one of the items `list(from until to)` of [[shadowItems]] is met by the ray at a
+    * t below `limit`: each with the test the any-hit walk gives it ([[Primitives.blocks]], or
+    * the face's own test for a mesh's face); stops at the first.
+    */
+  private[render] def anyBlocks(
+      items: ShadowItems,
+      list: Array[Int],
+      from: Int,
+      to: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    // Perf: a plain loop over the cell's items, the hot loop of a shadow ray toward a point light
+    // with a buffer (docs/performance.md, round 19).
+    var hit = false
+    var i   = from
+    while i < to && !hit do
+      val item = list(i)
+      val k    = items.owner(item)
+      val f    = items.face(item)
+      hit =
+        if f >= 0 then
+          prims
+            .meshes(prims.data(Primitives.Stride * k).toInt)
+            .faceBlocks(f, limit, ox, oy, oz, dx, dy, dz)
+        else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+      i += 1
+    hit
 
   /** True when some walk takes more than one node (of this tree or a mesh's): only then can a
     * shadow ray's guess ([[blocks]]) save a walk more than it costs.

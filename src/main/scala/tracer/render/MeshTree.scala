@@ -44,6 +44,34 @@ final class MeshTree(
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size
 
+  /** The number of faces. */
+  def faceCount: Int = faces.length
+
+  /** Writes the box of leaf-order face `k` (low x, y, z, then high) into `out` from `to`. */
+  private[render] def faceBox(k: Int, out: Array[Double], to: Int): Unit =
+    var axis = 0
+    while axis < 3 do
+      val a = vertices(at(3 * k) + axis)
+      val b = vertices(at(3 * k + 1) + axis)
+      val c = vertices(at(3 * k + 2) + axis)
+      out(to + axis) = Math.min(a, Math.min(b, c))
+      out(to + 3 + axis) = Math.max(a, Math.max(b, c))
+      axis += 1
+
+  /** True when leaf-order face `k` is met by the ray at a t below `limit`: the test of the face
+    * that [[occludedBelow]] makes, on its own (for a [[LightBuffer]]'s cell).
+    */
+  private[render] def faceBlocks(
+      k: Int,
+      limit: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Boolean = MeshWalk.face(planes, at, vertices, k, limit, ox, oy, oz, dx, dy, dz) < limit
+
   /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the mesh's
     * nearest face at a t ≤ `limit` (+∞ when there is none), the face itself left in
     * `query.meshFace`: the lowest-numbered of the faces at that distance, as a loop over the faces
@@ -290,7 +318,7 @@ private[render] object MeshWalk:
     }
 
   /** The distance to leaf-order face k ([[tracer.geometry.Mesh.faceDistance]]). */
-  private inline def face(
+  inline def face(
       planes: Array[Double],
       at: Array[Int],
       vertices: IArray[Double],

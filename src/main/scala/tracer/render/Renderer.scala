@@ -108,7 +108,12 @@ object Renderer:
         pool: Option[ExecutionContext] = None
     ): Frame =
       val projection = Projection(scene.camera, config.film)
-      val world      = World(scene, pool)
+      // Whitted's full mode traces a shadow ray a sample and point light at least: enough to
+      // tell World whether its lights' buffers pay for themselves.
+      val shadowRays = config.integrator match
+        case Integrator.Whitted(ShadingMode.Full, n) => config.columns.toLong * config.rows * n * n
+        case _                                       => 0L
+      val world = World(scene, pool, shadowRays)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

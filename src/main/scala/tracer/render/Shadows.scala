@@ -164,16 +164,33 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   ): Double =
     if !guessing || inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
     else
-      val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
-      val b = guess(g)
-      if b >= 0 && tree.blocks(b, guessNode(g), fx, fy, fz, dx, dy, dz, reach, query) then 0.0
-      else
-        query.blocker = -1
-        val blocked = world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query)
-        // An unbounded shape's block (a plane's) leaves blocker at −1: no guess.
-        guess(g) = if blocked then query.blocker else -1
-        guessNode(g) = query.blockerNode
-        if blocked then 0.0 else 1.0
+      world.lightBuffer(k) match
+        case Some(buffer) =>
+          if world.occludedToward(buffer, fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
+        case None => guessed(k, depth, fx, fy, fz, dx, dy, dz, reach)
+
+  /** [[pointToward]] with the last blocker's guess, for a light without a buffer. */
+  private def guessed(
+      k: Int,
+      depth: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
+    val b = guess(g)
+    if b >= 0 && tree.blocks(b, guessNode(g), fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+    else
+      query.blocker = -1
+      val blocked = world.occludedAlong(fx, fy, fz, dx, dy, dz, reach, query)
+      // An unbounded shape's block (a plane's) leaves blocker at −1: no guess.
+      guess(g) = if blocked then query.blocker else -1
+      guessNode(g) = query.blockerNode
+      if blocked then 0.0 else 1.0
 
   /** [[point]] from (fx, fy, fz) in unit direction (dx, dy, dz). */
   def pointAlong(

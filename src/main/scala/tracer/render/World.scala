@@ -10,8 +10,12 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   * as its [[Route]] says. Built once per picture from the immutable [[tracer.scene.Scene]] and
   * never changed after. `pool` (the render's threads) builds the hierarchy of a large mesh in
   * parallel; without it everything is built on the calling thread, to the same result.
+  *
+  * @param shadowRays about how many shadow rays toward each point light the render will trace
+  *   (its samples: 0 for none); when that is at least [[LightBuffer.RaysPerItem]] a bounded item,
+  *   each point light of a world that lets no light through gets a [[LightBuffer]]
   */
-final class World(scene: Scene, pool: Option[ExecutionContext] = None):
+final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRays: Long = 0):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
@@ -104,6 +108,83 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None):
   private val opaqueUnbounded = opaqueTree.fold(Primitives(IndexedSeq.empty, Array.emptyIntArray)) {
     t => Primitives(opaqueIndex.map(shapes), t.unbounded)
   }
+
+  // Perf: a point light's shadow rays look up their cell of its buffer and test a few items,
+  // instead of walking the tree (docs/performance.md, round 19); only where the walk is more than
+  // a node and the render long enough to pay for the buffers.
+  private val buffered = !transmits && bvh.deep && lights.exists(_.area.isEmpty) &&
+    shadowRays >= LightBuffer.RaysPerItem * bvh.itemCount
+  private val items: ShadowItems = if buffered then bvh.shadowItems else ShadowItems.empty
+  private val buffers: IArray[Option[LightBuffer]] = lights.map { l =>
+    if !buffered || l.area.isDefined then None
+    else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
+  }
+
+  /** The buffer of light `k` when it has one (a point light, in a world that builds them). */
+  private[render] def lightBuffer(k: Int): Option[LightBuffer] = buffers(k)
+
+  /** [[occludedAlong]] for a shadow ray toward the point light whose buffer is `buffer`, from
+    * (ox, oy, oz) in unit direction (dx, dy, dz), `limit` the distance to the light: the same
+    * answer, from the unbounded shapes, the buffer's items tested on every ray and those of the
+    * ray's cell (the tree when the buffer does not answer the ray).
+    */
+  def occludedToward(
+      buffer: LightBuffer,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    val cell = buffer.cell(dx, dy, dz, limit)
+    if cell == LightBuffer.Walk then occludedAlong(ox, oy, oz, dx, dy, dz, limit, query)
+    else
+      // Perf: as occludedAlong, the unbounded shapes in a plain loop that stops at the first.
+      var k = 0
+      while k < unbounded.size && !(unboundedDistance(
+          k,
+          limit,
+          ox,
+          oy,
+          oz,
+          dx,
+          dy,
+          dz,
+          query
+        ) < limit)
+      do k += 1
+      k < unbounded.size ||
+      bvh.anyBlocks(
+        items,
+        buffer.always,
+        0,
+        buffer.always.length,
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz,
+        limit,
+        query
+      ) ||
+      cell >= 0 && bvh.anyBlocks(
+        items,
+        buffer.items,
+        buffer.start(cell),
+        buffer.start(cell + 1),
+        ox,
+        oy,
+        oz,
+        dx,
+        dy,
+        dz,
+        limit,
+        query
+      )
 
   /** The number of shapes. */
   def size: Int = shapes.length

@@ -1,0 +1,332 @@
+package tracer.render
+
+/** A point light's light buffer (Haines and Greenberg, 1986): the directions around the light as
+  * the six faces of a cube, the part of each face that the scene covers cut into cells, and in
+  * each cell the items (a bounded shape, or one face of a mesh: [[ShadowItems]]) whose boxes
+  * some direction of the cell meets. Immutable after [[LightBuffer.build]].
+  *
+  * A shadow ray from a point toward the light keeps one direction as seen from the light along
+  * its whole length (each of its points lies on the line from the light back through the point),
+  * so only the items of that direction's cell can block it: a grid lookup and a few tests of
+  * those items in place of a walk down the tree, with the same test of each, so the same answer
+  * (`LightBufferProperties`).
+  *
+  * Why exact: an item's cells are those of its box widened by 10⁻⁷ of its size (as the tree's
+  * float boxes are rounded outwards), its part of a face widened by [[LightBuffer.Slack]] in the
+  * face's coordinates, and each face also takes the items whose points lie within a relative
+  * 10⁻⁶ of its edges. A ray's direction from the light differs from the true one by rounding,
+  * about 6·10⁻¹⁶ (r / s + 1) for a ray of length r and a point at distance s from the light; the
+  * items nearer the light than a ten-thousandth of the scene's size are tested on every ray, and
+  * a ray longer than [[reachLimit]] takes the tree instead, so that error stays far below the
+  * slack.
+  *
+  * @param lx, ly, lz  the light's place
+  * @param windows     per face f, at 4f: the face's covered window's low u and v, and cells per
+  *   unit of u and of v
+  * @param highs       per face f, at 2f: the window's high u and v
+  * @param sizes       per face f, at 3f: its cells along u and along v, and its first cell's number
+  * @param start       cell c's items are `items(start(c) until start(c + 1))`
+  * @param items       the cells' items, numbers in the [[ShadowItems]]
+  * @param always      the items tested on every ray (those too near the light or too large)
+  * @param reachLimit  the longest shadow ray the buffer answers
+  */
+final class LightBuffer private (
+    lx: Double,
+    ly: Double,
+    lz: Double,
+    windows: Array[Double],
+    highs: Array[Double],
+    sizes: Array[Int],
+    private[render] val start: Array[Int],
+    private[render] val items: Array[Int],
+    private[render] val always: Array[Int],
+    val reachLimit: Double
+):
+  /** The number of cells, for tests and benchmarks. */
+  def cellCount: Int = start.length - 1
+
+  /** The number of items in all the cells (an item counted once per cell it is in). */
+  def entryCount: Int = items.length
+
+  /** The cell of the shadow ray in unit direction (dx, dy, dz) toward the light, `reach` long:
+    * a cell's number, [[LightBuffer.Outside]] for a direction no cell covers (only [[always]]
+    * may block it) or [[LightBuffer.Walk]] for a ray the buffer does not answer.
+    */
+  def cell(dx: Double, dy: Double, dz: Double, reach: Double): Int =
+    if !(reach <= reachLimit) then LightBuffer.Walk
+    else
+      // The direction from the light back to the ray's points: e = −d.
+      val ax = Math.abs(dx)
+      val ay = Math.abs(dy)
+      val az = Math.abs(dz)
+      if ax >= ay && ax >= az then face(if dx > 0 then 1 else 0, -dy / ax, -dz / ax)
+      else if ay >= az then face(if dy > 0 then 3 else 2, -dz / ay, -dx / ay)
+      else face(if dz > 0 then 5 else 4, -dx / az, -dy / az)
+
+  /** The cell of face `f` at (u, v), or [[LightBuffer.Outside]]. */
+  private def face(f: Int, u: Double, v: Double): Int =
+    val nu = sizes(3 * f)
+    val ru = (u - windows(4 * f)) * windows(4 * f + 2)
+    val rv = (v - windows(4 * f + 1)) * windows(4 * f + 3)
+    if ru.isNaN || rv.isNaN then LightBuffer.Walk
+    else if nu == 0 || ru < 0 || rv < 0 || u > highs(2 * f) || v > highs(2 * f + 1) then
+      LightBuffer.Outside
+    else
+      val nv = sizes(3 * f + 1)
+      sizes(3 * f + 2) + Math.min(ru.toInt, nu - 1) * nv + Math.min(rv.toInt, nv - 1)
+
+  /** The light's place, x. */
+  def x: Double = lx
+
+  /** The light's place, y. */
+  def y: Double = ly
+
+  /** The light's place, z. */
+  def z: Double = lz
+
+/** Building a [[LightBuffer]]. */
+object LightBuffer:
+  /** [[LightBuffer.cell]]'s answer for a direction no cell covers. */
+  val Outside: Int = -1
+
+  /** [[LightBuffer.cell]]'s answer for a ray the buffer does not answer: walk the tree. */
+  val Walk: Int = -2
+
+  /** How far an item's part of a face is widened, in the face's coordinates (u = tan of the angle
+    * off the face's centre): 10⁻⁷, far above a direction's rounding error and far below a cell.
+    */
+  val Slack: Double = 1e-7
+
+  /** How far beyond its edges a face takes items, relative: points whose direction is within
+    * this of the next face's are counted on both.
+    */
+  private val Relax = 1e-6
+
+  /** About how many cells a face has for each item on it. */
+  private val CellsPerItem = 4
+
+  /** The most cells along a face's side. */
+  private val MaxSide = 4096
+
+  /** Shadow rays a bounded item must expect for a buffer to pay for itself: below this
+    * [[World]] walks the tree (a small render of a big mesh would spend longer building it).
+    */
+  val RaysPerItem: Long = 4
+
+  /** The buffer of the light at (lx, ly, lz) over `items`, or None when it has nothing to bin. */
+  def build(lx: Double, ly: Double, lz: Double, items: ShadowItems): Option[LightBuffer] =
+    val light = Array(lx, ly, lz)
+    // The items' boxes relative to the light, and the scene's size seen from it: the farthest
+    // finite box corner.
+    val rel    = Array.tabulate(items.boxes.length)(i => items.boxes(i) - light(i % 3))
+    val extent = rel.iterator.map(Math.abs).filter(_ < Double.PositiveInfinity).maxOption
+    extent.filter(_ > 0).map(e => binned(lx, ly, lz, rel, items.size, 1e-4 * e))
+
+  /** The buffer of `n` items, boxes `rel` relative to the light, those nearer than `near` (or
+    * without finite bounds) tested on every ray.
+    */
+  private def binned(
+      lx: Double,
+      ly: Double,
+      lz: Double,
+      rel: Array[Double],
+      n: Int,
+      near: Double
+  ): LightBuffer =
+    val alwaysTested            = Array.tabulate(n)(i => !(gap(rel, 6 * i) >= near))
+    val (windows, highs, sizes) = grids(rel, n, alwaysTested)
+    val cells                   = (0 until 6).map(f => sizes(3 * f) * sizes(3 * f + 1)).sum
+    // An item in more cells than a sixteenth of them (or 64) is tested on every ray instead.
+    val widest = Math.max(64L, cells / 16L)
+    for i <- 0 until n if !alwaysTested(i) do
+      val span = (0 until 6).map { f =>
+        // Why: the cells on face f, one range or none.
+        var on = 0L
+        cellsOf(rel, 6 * i, f, windows, sizes)((cu0, cu1, cv0, cv1) =>
+          on = (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
+        )
+        on
+      }.sum
+      if span > widest then alwaysTested(i) = true
+    // Perf: one pass counting each cell's items, prefix sums, one pass placing them: flat arrays
+    // for up to millions of entries (a mesh's faces each in several cells).
+    val start = new Array[Int](cells + 1)
+    eachCell(rel, n, alwaysTested, windows, sizes)((c, _) => start(c + 1) += 1)
+    for c <- 0 until cells do start(c + 1) += start(c)
+    val items = new Array[Int](start(cells))
+    val next  = java.util.Arrays.copyOf(start, cells)
+    eachCell(rel, n, alwaysTested, windows, sizes) { (c, item) =>
+      items(next(c)) = item
+      next(c) += 1
+    }
+    val always = (0 until n).filter(alwaysTested).toArray
+    // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
+    // that length errs by less than a twentieth of the slack.
+    new LightBuffer(lx, ly, lz, windows, highs, sizes, start, items, always, 1e7 * near)
+
+  /** The six faces' windows (low u and v, cells per unit of each, at 4f), their high ends (at
+    * 2f) and sizes (cells along u and v, first cell, at 3f): each face's window the union of the
+    * binned items' parts of it, cut into about [[CellsPerItem]] cells an item, shaped as the
+    * window.
+    */
+  private def grids(
+      rel: Array[Double],
+      n: Int,
+      alwaysTested: Array[Boolean]
+  ): (Array[Double], Array[Double], Array[Int]) =
+    val windows = new Array[Double](24)
+    val highs   = Array.fill(12)(Double.NegativeInfinity)
+    val low     = Array.fill(12)(Double.PositiveInfinity)
+    val perFace = new Array[Int](6)
+    for i <- 0 until n if !alwaysTested(i); f <- 0 until 6 do
+      footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
+        low(2 * f) = Math.min(low(2 * f), u0); low(2 * f + 1) = Math.min(low(2 * f + 1), v0)
+        highs(2 * f) = Math.max(highs(2 * f), u1); highs(2 * f + 1) = Math.max(highs(2 * f + 1), v1)
+        perFace(f) += 1
+      }
+    val sizes = new Array[Int](18)
+    val _     = (0 until 6).foldLeft(0) { (first, f) =>
+      if perFace(f) == 0 then first
+      else
+        val wu     = Math.max(Slack, highs(2 * f) - low(2 * f))
+        val wv     = Math.max(Slack, highs(2 * f + 1) - low(2 * f + 1))
+        val target = CellsPerItem.toDouble * perFace(f)
+        val nu     = Math.max(1, Math.min(MaxSide, Math.round(Math.sqrt(target * wu / wv)).toInt))
+        val nv     = Math.max(1, Math.min(MaxSide, Math.round(target / nu).toInt))
+        sizes(3 * f) = nu; sizes(3 * f + 1) = nv; sizes(3 * f + 2) = first
+        windows(4 * f) = low(2 * f); windows(4 * f + 1) = low(2 * f + 1)
+        windows(4 * f + 2) = nu / wu; windows(4 * f + 3) = nv / wv
+        first + nu * nv
+    }
+    (windows, highs, sizes)
+
+  /** Runs `body` on (cell, item) for every cell of every item not tested on every ray. */
+  private inline def eachCell(
+      rel: Array[Double],
+      n: Int,
+      alwaysTested: Array[Boolean],
+      windows: Array[Double],
+      sizes: Array[Int]
+  )(inline body: (Int, Int) => Unit): Unit =
+    // Perf: nested counted loops over items, faces and cells, run twice a buffer over up to
+    // millions of entries: no range or closure per item.
+    var i = 0
+    while i < n do
+      if !alwaysTested(i) then
+        var f = 0
+        while f < 6 do
+          val nv   = sizes(3 * f + 1)
+          val base = sizes(3 * f + 2)
+          cellsOf(rel, 6 * i, f, windows, sizes) { (cu0, cu1, cv0, cv1) =>
+            var cu = cu0
+            while cu <= cu1 do
+              var cv = cv0
+              while cv <= cv1 do
+                body(base + cu * nv + cv, i)
+                cv += 1
+              cu += 1
+          }
+          f += 1
+      i += 1
+
+  /** Runs `body` on the range of face `f`'s cells (u first, then v, inclusive) that the box at
+    * `at` of `rel` covers, when it covers any.
+    */
+  private inline def cellsOf(
+      rel: Array[Double],
+      at: Int,
+      f: Int,
+      windows: Array[Double],
+      sizes: Array[Int]
+  )(inline body: (Int, Int, Int, Int) => Unit): Unit =
+    val nu = sizes(3 * f)
+    if nu > 0 then
+      val nv = sizes(3 * f + 1)
+      footprint(rel, at, f) { (u0, u1, v0, v1) =>
+        body(
+          index(u0, windows(4 * f), windows(4 * f + 2), nu),
+          index(u1, windows(4 * f), windows(4 * f + 2), nu),
+          index(v0, windows(4 * f + 1), windows(4 * f + 3), nv),
+          index(v1, windows(4 * f + 1), windows(4 * f + 3), nv)
+        )
+      }
+
+  /** The cell along one side of coordinate `u` (window from `low`, `scale` cells a unit, `n`
+    * cells), clamped to the window: the arithmetic of [[LightBuffer.cell]]'s lookup, which is
+    * monotonic, so a coordinate between two others falls between their cells.
+    */
+  private inline def index(u: Double, low: Double, scale: Double, n: Int): Int =
+    val r = (u - low) * scale
+    if !(r > 0) then 0 else Math.min(r.toInt, n - 1)
+
+  /** The distance from the light to the box at `at` of `rel` (NaN for a box that is not finite). */
+  private def gap(rel: Array[Double], at: Int): Double =
+    def along(a: Int): Double =
+      val g = Math.max(0.0, Math.max(rel(at + a), -rel(at + 3 + a)))
+      g * g
+    val finite = (0 until 6).forall(c => Math.abs(rel(at + c)) < Double.PositiveInfinity)
+    if finite then Math.sqrt(along(0) + along(1) + along(2)) else Double.NaN
+
+  /** Runs `body` on the part of face `f` (2a for the directions whose axis a coordinate is the
+    * largest and positive, 2a + 1 negative) that the box at `at` of `rel` covers: its low and high
+    * u (axis a + 1 over axis a, mod 3) and v (a + 2 over a), widened by [[Slack]]; nothing when
+    * none of the box's directions lies on the face (within [[Relax]]).
+    */
+  private inline def footprint(rel: Array[Double], at: Int, f: Int)(
+      inline body: (Double, Double, Double, Double) => Unit
+  ): Unit =
+    val a       = f >> 1
+    val b       = (a + 1) % 3
+    val c       = (a + 2) % 3
+    val negated = (f & 1) == 1
+    // The box's range along the face's axis, counted outwards from the light.
+    val aLow  = if negated then -rel(at + 3 + a) else rel(at + a)
+    val aHigh = if negated then -rel(at + a) else rel(at + 3 + a)
+    // A direction lies on the face when its axis a part is the largest: the box's points come
+    // no nearer the face's axis than m.
+    val m = Math.max(nearest(rel(at + b), rel(at + 3 + b)), nearest(rel(at + c), rel(at + 3 + c)))
+    val floor = m * (1 - Relax)
+    if aHigh > 0 && aHigh >= floor then
+      val aFrom = Math.max(aLow, floor)
+      if aFrom > 0 then
+        val u0 = low(rel(at + b), aFrom, aHigh)
+        val u1 = high(rel(at + 3 + b), aFrom, aHigh)
+        val v0 = low(rel(at + c), aFrom, aHigh)
+        val v1 = high(rel(at + 3 + c), aFrom, aHigh)
+        if u0 <= u1 && v0 <= v1 then body(u0, u1, v0, v1)
+      else body(-1 - Slack, 1 + Slack, -1 - Slack, 1 + Slack)
+
+  /** The least |x| over [lo, hi]. */
+  private inline def nearest(lo: Double, hi: Double): Double =
+    if lo <= 0 && hi >= 0 then 0.0 else Math.min(Math.abs(lo), Math.abs(hi))
+
+  /** The least of x / a for a in [aFrom, aHigh] (0 < aFrom), the low end of a box's coordinate
+    * x, widened and clamped to the face.
+    */
+  private inline def low(x: Double, aFrom: Double, aHigh: Double): Double =
+    Math.max(-1 - Slack, Math.min(x / aFrom, x / aHigh) - Slack)
+
+  /** As [[low]] for the greatest, from the high end x. */
+  private inline def high(x: Double, aFrom: Double, aHigh: Double): Double =
+    Math.min(1 + Slack, Math.max(x / aFrom, x / aHigh) + Slack)
+
+/** The items a [[LightBuffer]] bins, numbered from 0: each primitive of a [[Bvh]] that is not a
+  * mesh, and each face of each of its meshes, with its box.
+  *
+  * @param boxes  item i's box at 6i (low x, y, z, then high), widened by 10⁻⁷ of its size
+  * @param owner  item i's primitive, in the tree's leaf order
+  * @param face   item i's face in its mesh's leaf order, or −1 for a primitive that is not a mesh
+  */
+final class ShadowItems(
+    private[render] val boxes: Array[Double],
+    private[render] val owner: Array[Int],
+    private[render] val face: Array[Int]
+):
+  /** The number of items. */
+  def size: Int = owner.length
+
+/** Building [[ShadowItems]]. */
+object ShadowItems:
+  /** No items. */
+  val empty: ShadowItems =
+    ShadowItems(Array.emptyDoubleArray, Array.emptyIntArray, Array.emptyIntArray)

@@ -1,0 +1,176 @@
+package tracer.render
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.geometry.{
+  Box,
+  Cone,
+  Csg,
+  CsgOperation,
+  Cylinder,
+  Mesh,
+  Placed,
+  Plane,
+  Ray,
+  Shape,
+  Sphere,
+  Torus,
+  Triangle
+}
+import tracer.math.{Placement, Vec3}
+import tracer.scene.{Camera, Light, Scene, SceneObject, Surface}
+import tracer.testkit.Generators.unitVec
+
+/** A point light's [[LightBuffer]] answers every shadow ray toward it as the tree's any-hit walk
+  * does ([[World.occludedToward]] against [[World.occludedAlong]]): from points anywhere, on the
+  * shapes' surfaces, next to the light and very far from it, with lights and shapes on a coarse
+  * grid so that directions along the cube's edges and faces through the light are common.
+  */
+class LightBufferProperties extends ScalaCheckSuite:
+
+  override def scalaCheckTestParameters =
+    super.scalaCheckTestParameters.withMinSuccessfulTests(60)
+
+  private val small     = Gen.choose(-6.0, 6.0)
+  private val point     = for x <- small; y <- small; z <- small yield Vec3(x, y, z)
+  private val gridPoint = for x <- Gen.choose(-4, 4); y <- Gen.choose(-4, 4); z <- Gen.choose(-4, 4)
+  yield Vec3(x, y, z)
+  private val size = Gen.choose(0.2, 2.5)
+
+  /** A bumpy grid of squares (two faces each) at height about y, n × n squares. */
+  private def terrain(n: Int, y: Double, bump: Double): Mesh =
+    val vertices =
+      IArray.from(for
+        i <- 0 to n; j <- 0 to n
+        c <- List(-4 + 8.0 * i / n, y + bump * Math.sin(i * 1.7 + j * 0.9), -4 + 8.0 * j / n)
+      yield c)
+    def at(i: Int, j: Int) = i * (n + 1) + j
+    val corners            = IArray.from(for
+      i <- 0 until n; j <- 0 until n
+      c <- List(at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1))
+    yield c)
+    Mesh(vertices, corners)
+
+  private val triangle = Gen
+    .oneOf(point, gridPoint)
+    .flatMap { p =>
+      Gen.zip(Gen.const(p), Gen.oneOf(point, gridPoint), Gen.oneOf(point, gridPoint))
+    }
+    .retryUntil(Triangle.isProper.tupled)
+    .map(Triangle(_, _, _))
+
+  private val placement: Gen[Placement] =
+    for s <- Gen.choose(0.3, 2.0); r <- point; t <- point yield Placement(s, r * 18, t)
+
+  private val general: Gen[Shape] = Gen.oneOf(
+    for c <- Gen.oneOf(point, gridPoint); d <- size yield Box(c, c + Vec3(d, d * 0.5, d)),
+    for b <- point; axis <- unitVec; h <- size; r <- size; open <- Gen.oneOf(true, false)
+    yield Cylinder(b, b + axis * h, r * 0.5, open),
+    for b <- point; axis <- unitVec; h <- size; r <- size yield Cone(b, 0.0, b + axis * h, r),
+    for r <- size; p <- placement yield Placed(Torus(r, r * 0.3), p),
+    for c <- point; d <- size
+    yield Csg(CsgOperation.Difference, Vector(Box(c, c + Vec3(d, d, d)), Sphere(c, d * 0.7)))
+  )
+
+  private val shape: Gen[Shape] = Gen.frequency(
+    4 -> (for c <- Gen.oneOf(point, gridPoint); r <- Gen.choose(0.05, 1.5) yield Sphere(c, r)),
+    4 -> triangle,
+    2 -> (for n <- Gen.choose(2, 12); y <- small; b <- Gen.choose(0.0, 1.0)
+    yield terrain(n, y, b)),
+    2 -> general,
+    1 -> Gen.choose(-6, 6).map(d => Plane.at(Vec3.UnitY, d))
+  )
+
+  private val light: Gen[Vec3] = Gen.oneOf(point, gridPoint, point.map(_ * 3))
+
+  private def worldOf(shapes: Seq[Shape], lights: Seq[Vec3]): World =
+    World(
+      Scene(
+        Camera(Vec3(0, 0, -20), Vec3.Zero),
+        lights = lights.map(Light(_)).toVector,
+        objects = shapes.map(SceneObject(_)).toVector
+      ),
+      shadowRays = Long.MaxValue
+    )
+
+  private val world: Gen[World] =
+    for
+      n      <- Gen.choose(2, 60)
+      shapes <- Gen.listOfN(n, shape)
+      lights <- Gen.listOfN(2, light)
+    yield worldOf(shapes, lights)
+
+  /** Shading points: anywhere, on a grid, beside a light, far away, and where rays from a light's
+    * neighbourhood meet the shapes (points on their surfaces, as shading's are).
+    */
+  private def points(w: World): Gen[List[Vec3]] =
+    val l         = w.lights.map(_.location)
+    val onSurface = for o <- point; d <- unitVec yield
+      val q = w.newQuery()
+      val i = w.nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q)
+      if i < 0 then o else o + d * q.distance
+    val nearLight = for k <- Gen.choose(0, l.size - 1); d <- unitVec; e <- Gen.choose(-9, -1)
+    yield l(k) + d * Math.pow(10, e)
+    val far = for d <- unitVec; e <- Gen.choose(2, 12) yield d * Math.pow(10, e)
+    Gen.listOfN(
+      60,
+      Gen.frequency(3 -> point, 2 -> gridPoint, 4 -> onSurface, 1 -> nearLight, 1 -> far)
+    )
+
+  property("a point light's buffer answers each shadow ray as the tree's walk"):
+    forAll(world.flatMap(w => points(w).map(w -> _))) { (w, from) =>
+      val query = w.newQuery()
+      for k <- w.lights.indices; buffer <- w.lightBuffer(k); p <- from do
+        val t     = w.lights(k).location - p
+        val reach = t.length
+        if reach > 0 then
+          val d = t / reach
+          assertEquals(
+            w.occludedToward(buffer, p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
+            w.occludedAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
+            s"light $k at ${w.lights(k).location}, from $p"
+          )
+    }
+
+  test("a world of many faces gets a buffer for each point light, filled"):
+    val w      = worldOf(Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1)), Seq(Vec3(1, 8, -2)))
+    val buffer = w.lightBuffer(0)
+    assert(buffer.isDefined)
+    assert(buffer.get.cellCount > 1000, buffer.get.cellCount)
+    assert(buffer.get.entryCount >= 2 * 30 * 30, buffer.get.entryCount)
+
+  test("no buffer for a short render, a world that lets light through, or an area light"):
+    val shapes = Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1))
+    val scene  = Scene(
+      Camera(Vec3(0, 0, -20), Vec3.Zero),
+      lights = Vector(Light(Vec3(1, 8, -2))),
+      objects = shapes.map(SceneObject(_)).toVector
+    )
+    assert(World(scene, shadowRays = 100).lightBuffer(0).isEmpty)
+    val glass = scene.copy(objects =
+      scene.objects :+ SceneObject(Sphere(Vec3(3, 1, 0), 1), Surface(transmit = 0.5))
+    )
+    assert(World(glass, shadowRays = Long.MaxValue).lightBuffer(0).isEmpty)
+    val area = tracer.scene.AreaLight(Vec3(1, 0, 0), Vec3(0, 0, 1), 4, 4)
+    val lit  = scene.copy(lights = Vector(Light(Vec3(1, 8, -2), area = Some(area))))
+    assert(World(lit, shadowRays = Long.MaxValue).lightBuffer(0).isEmpty)
+
+  test("shading through the buffers gives the walk's colours, bit for bit"):
+    val shapes = Seq(
+      terrain(24, 0, 0.6),
+      Sphere(Vec3(0, 1.5, 0), 1),
+      Plane.at(Vec3.UnitY, -1),
+      Box(Vec3(1, 0, 1), Vec3(2, 1, 2))
+    )
+    val scene = Scene(
+      Camera(Vec3(0, 3, -9), Vec3.Zero),
+      lights = Vector(Light(Vec3(-4, 7, -5)), Light(Vec3(5, 3, -2))),
+      objects = shapes.map(SceneObject(_, Surface(reflection = 0.3))).toVector
+    )
+    val walked   = Shading(World(scene), ShadingMode.Full)
+    val buffered = Shading(World(scene, shadowRays = Long.MaxValue), ShadingMode.Full)
+    for i <- 0 until 40; j <- 0 until 30 do
+      val d   = Vec3(-0.4 + i * 0.02, -0.35 + j * 0.02, 1).normalised.get
+      val ray = Ray(Vec3(0, 3, -9), d)
+      assertEquals(buffered.colour(ray, 5), walked.colour(ray, 5), ray.toString)
