@@ -115,12 +115,31 @@ object LightBuffer:
 
   /** The buffer of the light at (lx, ly, lz) over `items`, or None when it has nothing to bin. */
   def build(lx: Double, ly: Double, lz: Double, items: ShadowItems): Option[LightBuffer] =
-    val light = Array(lx, ly, lz)
-    // The items' boxes relative to the light, and the scene's size seen from it: the farthest
-    // finite box corner.
-    val rel    = Array.tabulate(items.boxes.length)(i => items.boxes(i) - light(i % 3))
-    val extent = rel.iterator.map(Math.abs).filter(_ < Double.PositiveInfinity).maxOption
-    extent.filter(_ > 0).map(e => binned(lx, ly, lz, rel, items.size, 1e-4 * e))
+    val n   = items.size
+    val rel = new Array[Double](6 * n)
+    // Perf: the build's loops run once a light, before the render, over up to millions of items,
+    // in the JIT's window: plain loops on flat arrays, no closure, range or boxed double per
+    // item (a first version with them took 250 ms of a 720p render of mesh-20000; round 19).
+    // The boxes relative to the light, and the scene's size seen from it: the farthest finite
+    // box corner.
+    var extent = 0.0
+    var i      = 0
+    while i < 6 * n do
+      val d = items.boxes(i) - (if i % 3 == 0 then lx else if i % 3 == 1 then ly else lz)
+      rel(i) = d
+      val e = Math.abs(d)
+      if e > extent && e < Double.PositiveInfinity then extent = e
+      i += 1
+    if !(extent > 0) then None else Some(binned(lx, ly, lz, rel, n, 1e-4 * extent))
+
+  /** What [[binned]] knows of an item that does not lie on exactly one face: on none. */
+  private val OnNone: Byte = -1
+
+  /** An item near an edge of the cube, on several faces: its parts are found again when needed. */
+  private val OnSeveral: Byte = -2
+
+  /** An item tested on every ray: too near the light, not finite, or in too many cells. */
+  private val OnAlways: Byte = -3
 
   /** The buffer of `n` items, boxes `rel` relative to the light, those nearer than `near` (or
     * without finite bounds) tested on every ray.
@@ -133,59 +152,130 @@ object LightBuffer:
       n: Int,
       near: Double
   ): LightBuffer =
-    val alwaysTested            = Array.tabulate(n)(i => !(gap(rel, 6 * i) >= near))
-    val (windows, highs, sizes) = grids(rel, n, alwaysTested)
-    val cells                   = (0 until 6).map(f => sizes(3 * f) * sizes(3 * f + 1)).sum
+    // Each item's face (0 to 5) and its part of it (u0, u1, v0, v1 at 4i) when it lies on one
+    // face only, as most do; else OnNone, OnSeveral or OnAlways.
+    val on    = new Array[Byte](n)
+    val parts = new Array[Double](4 * n)
+    // Perf: as build; an item's one part is found once, not in each of the three passes.
+    var i = 0
+    while i < n do
+      if !(gap(rel, 6 * i) >= near) then on(i) = OnAlways
+      else
+        var faces = 0
+        var f     = 0
+        while f < 6 do
+          footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
+            if faces == 0 then
+              on(i) = f.toByte
+              parts(4 * i) = u0; parts(4 * i + 1) = u1; parts(4 * i + 2) = v0
+              parts(4 * i + 3) = v1
+            faces += 1
+          }
+          f += 1
+        if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
+      i += 1
+    val (windows, highs, sizes) = grids(rel, n, on, parts)
+    val cells                   = sizes(18)
     // An item in more cells than a sixteenth of them (or 64) is tested on every ray instead.
     val widest = Math.max(64L, cells / 16L)
-    for i <- 0 until n if !alwaysTested(i) do
-      val span = (0 until 6).map { f =>
-        // Why: the cells on face f, one range or none.
-        var on = 0L
-        cellsOf(rel, 6 * i, f, windows, sizes)((cu0, cu1, cv0, cv1) =>
-          on = (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
-        )
-        on
-      }.sum
-      if span > widest then alwaysTested(i) = true
-    // Perf: one pass counting each cell's items, prefix sums, one pass placing them: flat arrays
-    // for up to millions of entries (a mesh's faces each in several cells).
+    // Perf: as build: count each cell's items (refusing the widest), prefix sums, then place
+    // them: flat arrays for up to millions of entries (a mesh's faces each in several cells).
     val start = new Array[Int](cells + 1)
-    eachCell(rel, n, alwaysTested, windows, sizes)((c, _) => start(c + 1) += 1)
-    for c <- 0 until cells do start(c + 1) += start(c)
+    i = 0
+    while i < n do
+      if on(i) != OnAlways && on(i) != OnNone then
+        var span = 0L
+        cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _) =>
+          span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
+        )
+        if span > widest then on(i) = OnAlways
+        else
+          cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
+            var cu = cu0
+            while cu <= cu1 do
+              var cv = cv0
+              while cv <= cv1 do
+                start(base + cu * nv + cv + 1) += 1
+                cv += 1
+              cu += 1
+          }
+      i += 1
+    var c = 0
+    while c < cells do
+      start(c + 1) += start(c)
+      c += 1
     val items = new Array[Int](start(cells))
     val next  = java.util.Arrays.copyOf(start, cells)
-    eachCell(rel, n, alwaysTested, windows, sizes) { (c, item) =>
-      items(next(c)) = item
-      next(c) += 1
-    }
-    val always = (0 until n).filter(alwaysTested).toArray
+    var count = 0
+    i = 0
+    while i < n do
+      if on(i) == OnAlways then count += 1
+      else if on(i) != OnNone then
+        cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
+          var cu = cu0
+          while cu <= cu1 do
+            var cv = cv0
+            while cv <= cv1 do
+              val cell = base + cu * nv + cv
+              items(next(cell)) = i
+              next(cell) += 1
+              cv += 1
+            cu += 1
+        }
+      i += 1
+    val always = new Array[Int](count)
+    count = 0
+    i = 0
+    while i < n do
+      if on(i) == OnAlways then
+        always(count) = i
+        count += 1
+      i += 1
     // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
     // that length errs by less than a twentieth of the slack.
     new LightBuffer(lx, ly, lz, windows, highs, sizes, start, items, always, 1e7 * near)
 
+  /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
+    * high u and v (from `parts` for an item on one face; found again for one on several).
+    */
+  private inline def partsOf(rel: Array[Double], on: Array[Byte], parts: Array[Double], i: Int)(
+      inline body: (Int, Double, Double, Double, Double) => Unit
+  ): Unit =
+    val o = on(i)
+    if o >= 0 then body(o, parts(4 * i), parts(4 * i + 1), parts(4 * i + 2), parts(4 * i + 3))
+    else if o == OnSeveral then
+      // Perf: as build.
+      var f = 0
+      while f < 6 do
+        footprint(rel, 6 * i, f)((u0, u1, v0, v1) => body(f, u0, u1, v0, v1))
+        f += 1
+
   /** The six faces' windows (low u and v, cells per unit of each, at 4f), their high ends (at
-    * 2f) and sizes (cells along u and v, first cell, at 3f): each face's window the union of the
-    * binned items' parts of it, cut into about [[CellsPerItem]] cells an item, shaped as the
-    * window.
+    * 2f) and sizes (cells along u and v, first cell, at 3f; the number of cells at 18): each
+    * face's window the union of its items' parts, cut into about [[CellsPerItem]] cells an item,
+    * shaped as the window.
     */
   private def grids(
       rel: Array[Double],
       n: Int,
-      alwaysTested: Array[Boolean]
+      on: Array[Byte],
+      parts: Array[Double]
   ): (Array[Double], Array[Double], Array[Int]) =
     val windows = new Array[Double](24)
     val highs   = Array.fill(12)(Double.NegativeInfinity)
     val low     = Array.fill(12)(Double.PositiveInfinity)
     val perFace = new Array[Int](6)
-    for i <- 0 until n if !alwaysTested(i); f <- 0 until 6 do
-      footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
+    // Perf: as build.
+    var i = 0
+    while i < n do
+      partsOf(rel, on, parts, i) { (f, u0, u1, v0, v1) =>
         low(2 * f) = Math.min(low(2 * f), u0); low(2 * f + 1) = Math.min(low(2 * f + 1), v0)
         highs(2 * f) = Math.max(highs(2 * f), u1); highs(2 * f + 1) = Math.max(highs(2 * f + 1), v1)
         perFace(f) += 1
       }
-    val sizes = new Array[Int](18)
-    val _     = (0 until 6).foldLeft(0) { (first, f) =>
+      i += 1
+    val sizes = new Array[Int](19)
+    sizes(18) = (0 until 6).foldLeft(0) { (first, f) =>
       if perFace(f) == 0 then first
       else
         val wu     = Math.max(Slack, highs(2 * f) - low(2 * f))
@@ -200,56 +290,29 @@ object LightBuffer:
     }
     (windows, highs, sizes)
 
-  /** Runs `body` on (cell, item) for every cell of every item not tested on every ray. */
-  private inline def eachCell(
-      rel: Array[Double],
-      n: Int,
-      alwaysTested: Array[Boolean],
-      windows: Array[Double],
-      sizes: Array[Int]
-  )(inline body: (Int, Int) => Unit): Unit =
-    // Perf: nested counted loops over items, faces and cells, run twice a buffer over up to
-    // millions of entries: no range or closure per item.
-    var i = 0
-    while i < n do
-      if !alwaysTested(i) then
-        var f = 0
-        while f < 6 do
-          val nv   = sizes(3 * f + 1)
-          val base = sizes(3 * f + 2)
-          cellsOf(rel, 6 * i, f, windows, sizes) { (cu0, cu1, cv0, cv1) =>
-            var cu = cu0
-            while cu <= cu1 do
-              var cv = cv0
-              while cv <= cv1 do
-                body(base + cu * nv + cv, i)
-                cv += 1
-              cu += 1
-          }
-          f += 1
-      i += 1
-
-  /** Runs `body` on the range of face `f`'s cells (u first, then v, inclusive) that the box at
-    * `at` of `rel` covers, when it covers any.
+  /** Runs `body` on each range of cells (u first, then v, inclusive) that item `i` covers, with
+    * the face's first cell and its cells along v.
     */
   private inline def cellsOf(
       rel: Array[Double],
-      at: Int,
-      f: Int,
+      on: Array[Byte],
+      parts: Array[Double],
+      i: Int,
       windows: Array[Double],
       sizes: Array[Int]
-  )(inline body: (Int, Int, Int, Int) => Unit): Unit =
-    val nu = sizes(3 * f)
-    if nu > 0 then
+  )(inline body: (Int, Int, Int, Int, Int, Int) => Unit): Unit =
+    partsOf(rel, on, parts, i) { (f, u0, u1, v0, v1) =>
+      val nu = sizes(3 * f)
       val nv = sizes(3 * f + 1)
-      footprint(rel, at, f) { (u0, u1, v0, v1) =>
-        body(
-          index(u0, windows(4 * f), windows(4 * f + 2), nu),
-          index(u1, windows(4 * f), windows(4 * f + 2), nu),
-          index(v0, windows(4 * f + 1), windows(4 * f + 3), nv),
-          index(v1, windows(4 * f + 1), windows(4 * f + 3), nv)
-        )
-      }
+      body(
+        index(u0, windows(4 * f), windows(4 * f + 2), nu),
+        index(u1, windows(4 * f), windows(4 * f + 2), nu),
+        index(v0, windows(4 * f + 1), windows(4 * f + 3), nv),
+        index(v1, windows(4 * f + 1), windows(4 * f + 3), nv),
+        sizes(3 * f + 2),
+        nv
+      )
+    }
 
   /** The cell along one side of coordinate `u` (window from `low`, `scale` cells a unit, `n`
     * cells), clamped to the window: the arithmetic of [[LightBuffer.cell]]'s lookup, which is
@@ -261,11 +324,17 @@ object LightBuffer:
 
   /** The distance from the light to the box at `at` of `rel` (NaN for a box that is not finite). */
   private def gap(rel: Array[Double], at: Int): Double =
-    def along(a: Int): Double =
-      val g = Math.max(0.0, Math.max(rel(at + a), -rel(at + 3 + a)))
-      g * g
-    val finite = (0 until 6).forall(c => Math.abs(rel(at + c)) < Double.PositiveInfinity)
-    if finite then Math.sqrt(along(0) + along(1) + along(2)) else Double.NaN
+    val gx     = Math.max(0.0, Math.max(rel(at), -rel(at + 3)))
+    val gy     = Math.max(0.0, Math.max(rel(at + 1), -rel(at + 4)))
+    val gz     = Math.max(0.0, Math.max(rel(at + 2), -rel(at + 5)))
+    val finite = Math.abs(rel(at)) < Double.PositiveInfinity &&
+      Math.abs(rel(at + 1)) < Double.PositiveInfinity &&
+      Math.abs(rel(at + 2)) < Double.PositiveInfinity &&
+      Math.abs(rel(at + 3)) < Double.PositiveInfinity &&
+      Math.abs(rel(at + 4)) < Double.PositiveInfinity && Math.abs(
+        rel(at + 5)
+      ) < Double.PositiveInfinity
+    if finite then Math.sqrt(gx * gx + gy * gy + gz * gz) else Double.NaN
 
   /** Runs `body` on the part of face `f` (2a for the directions whose axis a coordinate is the
     * largest and positive, 2a + 1 negative) that the box at `at` of `rel` covers: its low and high

@@ -1,6 +1,7 @@
 package tracer.render
 
-import scala.concurrent.ExecutionContext
+import scala.concurrent.{Await, ExecutionContext, Future}
+import scala.concurrent.duration.Duration
 import tracer.geometry.{Hit, Mesh, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.{Light, Scene, SceneObject, Surface}
@@ -115,10 +116,17 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
   private val buffered = !transmits && bvh.deep && lights.exists(_.area.isEmpty) &&
     shadowRays >= LightBuffer.RaysPerItem * bvh.itemCount
   private val items: ShadowItems = if buffered then bvh.shadowItems else ShadowItems.empty
-  private val buffers: IArray[Option[LightBuffer]] = lights.map { l =>
-    if !buffered || l.area.isDefined then None
-    else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
-  }
+  // The point lights' buffers, built on the pool when there is one (a light a task).
+  private val buffers: IArray[Option[LightBuffer]] =
+    def build(l: Light) =
+      if !buffered || l.area.isDefined then None
+      else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
+    pool match
+      case Some(context) if buffered && lights.count(_.area.isEmpty) > 1 =>
+        given ExecutionContext = context
+        val built              = Future.traverse(lights.toSeq)(l => Future(build(l)))
+        IArray.from(Await.result(built, Duration.Inf))
+      case _ => lights.map(build)
 
   /** The buffer of light `k` when it has one (a point light, in a world that builds them). */
   private[render] def lightBuffer(k: Int): Option[LightBuffer] = buffers(k)
