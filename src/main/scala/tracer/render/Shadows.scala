@@ -148,8 +148,9 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     grid(k)
 
   /** [[pointAlong]] toward the world's light `k`, a point light, from a point shaded `depth`
-    * reflections or refractions from the last allowed: the same share, trying the shape that
-    * blocked that light's last shadow ray from the same depth first.
+    * reflections or refractions from the last allowed: the same share, from the light's
+    * [[LightBuffer]] when it has one, else trying the shape that blocked that light's last
+    * shadow ray from the same depth first.
     */
   def pointToward(
       k: Int,
@@ -162,12 +163,16 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       dz: Double,
       reach: Double
   ): Double =
-    if !guessing || inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
+    if inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
     else
       world.lightBuffer(k) match
         case Some(buffer) =>
-          if world.occludedToward(buffer, fx, fy, fz, dx, dy, dz, reach, query) then 0.0 else 1.0
-        case None => guessed(k, depth, fx, fy, fz, dx, dy, dz, reach)
+          if world.occludedToward(buffer, fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+          else if !world.transmits then 1.0
+          else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
+        case None =>
+          if guessing then guessed(k, depth, fx, fy, fz, dx, dy, dz, reach)
+          else pointAlong(fx, fy, fz, dx, dy, dz, reach)
 
   /** [[pointToward]] with the last blocker's guess, for a light without a buffer. */
   private def guessed(

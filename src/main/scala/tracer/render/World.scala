@@ -113,9 +113,13 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
   // Perf: a point light's shadow rays look up their cell of its buffer and test a few items,
   // instead of walking the tree (docs/performance.md, round 19); only where the walk is more than
   // a node and the render long enough to pay for the buffers.
-  private val buffered = !transmits && bvh.deep && lights.exists(_.area.isEmpty) &&
-    shadowRays >= LightBuffer.RaysPerItem * bvh.itemCount
-  private val items: ShadowItems = if buffered then bvh.shadowItems else ShadowItems.empty
+  // The shapes a point light's shadow ray asks "blocked?": all of them in a world that lets no
+  // light through, the opaque ones (in their own tree) in one that clearWalks.
+  private val shadowTree: Bvh             = if transmits then opaqueTree.getOrElse(bvh) else bvh
+  private val shadowUnbounded: Primitives = if transmits then opaqueUnbounded else unbounded
+  private val buffered                    = (!transmits || clearWalks) && shadowTree.deep &&
+    lights.exists(_.area.isEmpty) && shadowRays >= LightBuffer.RaysPerItem * shadowTree.itemCount
+  private val items: ShadowItems = if buffered then shadowTree.shadowItems else ShadowItems.empty
   // The point lights' buffers, built on the pool when there is one (a light a task).
   private val buffers: IArray[Option[LightBuffer]] =
     def build(l: Light) =
@@ -131,10 +135,11 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
   /** The buffer of light `k` when it has one (a point light, in a world that builds them). */
   private[render] def lightBuffer(k: Int): Option[LightBuffer] = buffers(k)
 
-  /** [[occludedAlong]] for a shadow ray toward the point light whose buffer is `buffer`, from
-    * (ox, oy, oz) in unit direction (dx, dy, dz), `limit` the distance to the light: the same
-    * answer, from the unbounded shapes, the buffer's items tested on every ray and those of the
-    * ray's cell (the tree when the buffer does not answer the ray).
+  /** [[occludedAlong]] (in a world that lets light through, [[opaqueAlong]]) for a shadow ray
+    * toward the point light whose buffer is `buffer`, from (ox, oy, oz) in unit direction
+    * (dx, dy, dz), `limit` the distance to the light: the same answer, from the unbounded shapes,
+    * the buffer's items tested on every ray and those of the ray's cell (the tree when the
+    * buffer does not answer the ray).
     */
   def occludedToward(
       buffer: LightBuffer,
@@ -148,11 +153,13 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
       query: Query
   ): Boolean =
     val cell = buffer.cell(dx, dy, dz, limit)
-    if cell == LightBuffer.Walk then occludedAlong(ox, oy, oz, dx, dy, dz, limit, query)
+    if cell == LightBuffer.Walk then
+      if transmits then opaqueAlong(ox, oy, oz, dx, dy, dz, limit, query)
+      else occludedAlong(ox, oy, oz, dx, dy, dz, limit, query)
     else
       // Perf: as occludedAlong, the unbounded shapes in a plain loop that stops at the first.
       var k = 0
-      while k < unbounded.size && !(unboundedDistance(
+      while k < shadowUnbounded.size && !(shadowUnboundedDistance(
           k,
           limit,
           ox,
@@ -164,8 +171,8 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
           query
         ) < limit)
       do k += 1
-      k < unbounded.size ||
-      bvh.anyBlocks(
+      k < shadowUnbounded.size ||
+      shadowTree.anyBlocks(
         items,
         buffer.always,
         0,
@@ -179,7 +186,7 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
         limit,
         query
       ) ||
-      cell >= 0 && bvh.anyBlocks(
+      cell >= 0 && shadowTree.anyBlocks(
         items,
         buffer.items,
         buffer.start(cell),
@@ -193,6 +200,21 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
         limit,
         query
       )
+
+  /** Primitives.distance of unbounded shape `k` of those shadow rays toward a buffered light
+    * ask (all of them, or in a world that lets light through, the opaque ones).
+    */
+  private def shadowUnboundedDistance(
+      k: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      query: Query
+  ): Double = Primitives.distance(shadowUnbounded, k, cutoff, ox, oy, oz, dx, dy, dz, query)
 
   /** The number of shapes. */
   def size: Int = shapes.length

@@ -84,22 +84,34 @@ class LightBufferProperties extends ScalaCheckSuite:
 
   private val light: Gen[Vec3] = Gen.oneOf(point, gridPoint, point.map(_ * 3))
 
-  private def worldOf(shapes: Seq[Shape], lights: Seq[Vec3]): World =
+  private def worldOf(shapes: Seq[Shape], lights: Seq[Vec3], clear: Set[Int] = Set.empty): World =
     World(
       Scene(
         Camera(Vec3(0, 0, -20), Vec3.Zero),
         lights = lights.map(Light(_)).toVector,
-        objects = shapes.map(SceneObject(_)).toVector
+        objects = shapes.zipWithIndex.map { (s, i) =>
+          SceneObject(s, if clear(i) then Surface(transmit = 0.6) else Surface())
+        }.toVector
       ),
       shadowRays = Long.MaxValue
     )
 
+  // Worlds that let no light through, and worlds with some clear shapes (whose point lights'
+  // buffers hold the opaque shapes alone).
   private val world: Gen[World] =
     for
       n      <- Gen.choose(2, 60)
       shapes <- Gen.listOfN(n, shape)
       lights <- Gen.listOfN(2, light)
-    yield worldOf(shapes, lights)
+      clear <- Gen.oneOf(Gen.const(Set.empty[Int]), Gen.containerOf[Set, Int](Gen.choose(0, n - 1)))
+    yield worldOf(shapes, lights, clear)
+
+  /** The walk's answer the buffer must give: any blocker, or in a world that lets light through,
+    * any opaque blocker.
+    */
+  private def walked(w: World, p: Vec3, d: Vec3, reach: Double, query: Query): Boolean =
+    if w.transmits then w.opaqueAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach, query)
+    else w.occludedAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach, query)
 
   /** Shading points: anywhere, on a grid, beside a light, far away, and where rays from a light's
     * neighbourhood meet the shapes (points on their surfaces, as shading's are).
@@ -128,7 +140,7 @@ class LightBufferProperties extends ScalaCheckSuite:
           val d = t / reach
           assertEquals(
             w.occludedToward(buffer, p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
-            w.occludedAlong(p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
+            walked(w, p, d, reach, query),
             s"light $k at ${w.lights(k).location}, from $p"
           )
     }
@@ -140,7 +152,7 @@ class LightBufferProperties extends ScalaCheckSuite:
     assert(buffer.get.cellCount > 1000, buffer.get.cellCount)
     assert(buffer.get.entryCount >= 2 * 30 * 30, buffer.get.entryCount)
 
-  test("no buffer for a short render, a world that lets light through, or an area light"):
+  test("no buffer for a short render, a clear mesh, or an area light; one for glass"):
     val shapes = Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1))
     val scene  = Scene(
       Camera(Vec3(0, 0, -20), Vec3.Zero),
@@ -151,7 +163,11 @@ class LightBufferProperties extends ScalaCheckSuite:
     val glass = scene.copy(objects =
       scene.objects :+ SceneObject(Sphere(Vec3(3, 1, 0), 1), Surface(transmit = 0.5))
     )
-    assert(World(glass, shadowRays = Long.MaxValue).lightBuffer(0).isEmpty)
+    assert(World(glass, shadowRays = Long.MaxValue).lightBuffer(0).isDefined)
+    val clearMesh = scene.copy(objects =
+      scene.objects :+ SceneObject(terrain(4, 3, 0.2), Surface(transmit = 0.5))
+    )
+    assert(World(clearMesh, shadowRays = Long.MaxValue).lightBuffer(0).isEmpty)
     val area = tracer.scene.AreaLight(Vec3(1, 0, 0), Vec3(0, 0, 1), 4, 4)
     val lit  = scene.copy(lights = Vector(Light(Vec3(1, 8, -2), area = Some(area))))
     assert(World(lit, shadowRays = Long.MaxValue).lightBuffer(0).isEmpty)
@@ -166,7 +182,8 @@ class LightBufferProperties extends ScalaCheckSuite:
     val scene = Scene(
       Camera(Vec3(0, 3, -9), Vec3.Zero),
       lights = Vector(Light(Vec3(-4, 7, -5)), Light(Vec3(5, 3, -2))),
-      objects = shapes.map(SceneObject(_, Surface(reflection = 0.3))).toVector
+      objects = shapes.map(SceneObject(_, Surface(reflection = 0.3))).toVector :+
+        SceneObject(Sphere(Vec3(-1.5, 1, -1), 0.6), Surface(transmit = 0.7, ior = 1.5))
     )
     val walked   = Shading(World(scene), ShadingMode.Full)
     val buffered = Shading(World(scene, shadowRays = Long.MaxValue), ShadingMode.Full)
