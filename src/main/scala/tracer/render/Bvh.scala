@@ -210,12 +210,7 @@ final class Bvh(
         boxes(6 * i + 3) = hi.x; boxes(6 * i + 4) = hi.y; boxes(6 * i + 5) = hi.z
         owner(i) = k; face(i) = -1
         i += 1
-    for j <- 0 until n do
-      var size = 1.0
-      for c <- 0 until 6 do size = Math.max(size, 1 + Math.abs(boxes(6 * j + c)))
-      val m = 1e-7 * size
-      for c <- 0 until 3 do
-        boxes(6 * j + c) -= m; boxes(6 * j + 3 + c) += m
+    for j <- 0 until n do World.widen(boxes, 6 * j)
     ShadowItems(boxes, owner, face)
 
   /** True when one of the items `list(from until to)` of [[shadowItems]] is met by the ray at a

@@ -20,7 +20,6 @@ package tracer.render
   * a ray longer than [[reachLimit]] takes the tree instead, so that error stays far below the
   * slack.
   *
-  * @param lx, ly, lz  the light's place
   * @param windows     per face f, at 4f: the face's covered window's low u and v, and cells per
   *   unit of u and of v
   * @param highs       per face f, at 2f: the window's high u and v
@@ -31,16 +30,13 @@ package tracer.render
   * @param reachLimit  the longest shadow ray the buffer answers
   */
 final class LightBuffer private (
-    lx: Double,
-    ly: Double,
-    lz: Double,
     windows: Array[Double],
     highs: Array[Double],
     sizes: Array[Int],
     private[render] val start: Array[Int],
     private[render] val items: Array[Int],
     private[render] val always: Array[Int],
-    val reachLimit: Double
+    reachLimit: Double
 ):
   /** The number of cells, for tests and benchmarks. */
   def cellCount: Int = start.length - 1
@@ -74,15 +70,6 @@ final class LightBuffer private (
     else
       val nv = sizes(3 * f + 1)
       sizes(3 * f + 2) + Math.min(ru.toInt, nu - 1) * nv + Math.min(rv.toInt, nv - 1)
-
-  /** The light's place, x. */
-  def x: Double = lx
-
-  /** The light's place, y. */
-  def y: Double = ly
-
-  /** The light's place, z. */
-  def z: Double = lz
 
 /** Building a [[LightBuffer]]. */
 object LightBuffer:
@@ -130,7 +117,7 @@ object LightBuffer:
       val e = Math.abs(d)
       if e > extent && e < Double.PositiveInfinity then extent = e
       i += 1
-    if !(extent > 0) then None else Some(binned(lx, ly, lz, rel, n, 1e-4 * extent))
+    if !(extent > 0) then None else Some(binned(rel, n, 1e-4 * extent))
 
   /** What [[binned]] knows of an item that does not lie on exactly one face: on none. */
   private val OnNone: Byte = -1
@@ -145,9 +132,6 @@ object LightBuffer:
     * without finite bounds) tested on every ray.
     */
   private def binned(
-      lx: Double,
-      ly: Double,
-      lz: Double,
       rel: Array[Double],
       n: Int,
       near: Double
@@ -233,7 +217,7 @@ object LightBuffer:
       i += 1
     // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
     // that length errs by less than a twentieth of the slack.
-    new LightBuffer(lx, ly, lz, windows, highs, sizes, start, items, always, 1e7 * near)
+    new LightBuffer(windows, highs, sizes, start, items, always, 1e7 * near)
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
     * high u and v (from `parts` for an item on one face; found again for one on several).

@@ -13,8 +13,9 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   * parallel; without it everything is built on the calling thread, to the same result.
   *
   * @param shadowRays about how many shadow rays toward each point light the render will trace
-  *   (its samples: 0 for none); when that is at least [[LightBuffer.RaysPerItem]] a bounded item,
-  *   each point light of a world that lets no light through gets a [[LightBuffer]]
+  *   (its samples: 0 for none); when that is at least [[LightBuffer.RaysPerItem]] an item its
+  *   shadow rays may meet, each point light gets a [[LightBuffer]] (in a world that lets light
+  *   through, over its opaque shapes, unless a clear shape is a mesh)
   */
 final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRays: Long = 0):
   private val objects: Array[SceneObject] = scene.objects.toArray
@@ -112,9 +113,9 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
 
   // Perf: a point light's shadow rays look up their cell of its buffer and test a few items,
   // instead of walking the tree (docs/performance.md, round 19); only where the walk is more than
-  // a node and the render long enough to pay for the buffers.
-  // The shapes a point light's shadow ray asks "blocked?": all of them in a world that lets no
-  // light through, the opaque ones (in their own tree) in one that clearWalks.
+  // a node and the render long enough to pay for the buffers. The items are the shapes a shadow
+  // ray asks "blocked?": all of them in a world that lets no light through, the opaque ones (in
+  // their own tree) in one that clearWalks.
   private val shadowTree: Bvh             = if transmits then opaqueTree.getOrElse(bvh) else bvh
   private val shadowUnbounded: Primitives = if transmits then opaqueUnbounded else unbounded
   private val buffered                    = (!transmits || clearWalks) && shadowTree.deep &&
@@ -404,10 +405,28 @@ object World:
     */
   private def widenedBox(shape: Shape): Array[Double] =
     Shape.bounds(shape).fold(Array.fill(6)(Double.NaN)) { b =>
-      val size = 1 + Seq(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z).map(Math.abs).max
-      val m    = 1e-7 * size
-      Array(b.lo.x - m, b.lo.y - m, b.lo.z - m, b.hi.x + m, b.hi.y + m, b.hi.z + m)
+      val box = Array(b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z)
+      widen(box, 0)
+      box
     }
+
+  /** Widens the box at `at` of `boxes` (six doubles, lo then hi) by 10⁻⁷ of its coordinates'
+    * size, 1 + the largest |coordinate|: what the beams' and the light buffers' boxes take for
+    * the tree's rounding of its boxes outwards to floats.
+    */
+  private[render] def widen(boxes: Array[Double], at: Int): Unit =
+    // Perf: run for every item of a light buffer (up to millions, cold): no range or collection.
+    var largest = 0.0
+    var c       = 0
+    while c < 6 do
+      largest = Math.max(largest, Math.abs(boxes(at + c)))
+      c += 1
+    val m = 1e-7 * (1 + largest)
+    c = 0
+    while c < 3 do
+      boxes(at + c) -= m
+      boxes(at + 3 + c) += m
+      c += 1
 
   /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
   private def positions(centre: Vec3, light: tracer.scene.AreaLight): IArray[Double] =
