@@ -175,7 +175,7 @@ final class Bvh(
   /** The number of primitives in the tree's leaves, for tests. */
   def primitiveCount: Int = prims.size
 
-  /** The number of [[ShadowItems]] of its primitives: each mesh counts its faces. */
+  /** The number of [[BufferItems]] of its primitives: each mesh counts its faces. */
   def itemCount: Long =
     (0 until prims.size).iterator.map { k =>
       if prims.kind(k) == Primitives.MeshKind then
@@ -183,10 +183,10 @@ final class Bvh(
       else 1L
     }.sum
 
-  /** Its primitives as [[ShadowItems]] for the point lights' [[LightBuffer]]s: each that is not a
+  /** Its primitives as [[BufferItems]] for the [[LightBuffer]]s and the [[EyeBuffer]]: each that is not a
     * mesh, and each face of each mesh, with its box widened by 10⁻⁷ of its size.
     */
-  def shadowItems: ShadowItems =
+  def bufferItems: BufferItems =
     val n     = itemCount.toInt
     val boxes = new Array[Double](6 * n)
     val owner = new Array[Int](n)
@@ -211,14 +211,14 @@ final class Bvh(
         owner(i) = k; face(i) = -1
         i += 1
     for j <- 0 until n do World.widen(boxes, 6 * j)
-    ShadowItems(boxes, owner, face)
+    BufferItems(boxes, owner, face)
 
-  /** True when one of the items `list(from until to)` of [[shadowItems]] is met by the ray at a
+  /** True when one of the items `list(from until to)` of [[bufferItems]] is met by the ray at a
     * t below `limit`: each with the test the any-hit walk gives it ([[Primitives.blocks]], or
     * the face's own test for a mesh's face); stops at the first.
     */
   private[render] def anyBlocks(
-      items: ShadowItems,
+      items: BufferItems,
       list: Array[Int],
       from: Int,
       to: Int,
@@ -247,6 +247,54 @@ final class Bvh(
         else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
       i += 1
     hit
+
+  /** The index in `shapes` of the shape that the ray meets first among the items `list(from
+    * until to)` of [[bufferItems]] (nondecreasing in `gaps`, each item's box's distance from the
+    * ray's origin, rounded down), competing with shape `best` at `query.distance` (its face in
+    * `query.face`, −1 for a shape that is not a mesh): [[nearest]]'s answer among them, the
+    * distance and face left in the query. Ties go to the lower index, then the lower face.
+    */
+  private[render] def nearestAmong(
+      items: BufferItems,
+      gaps: Array[Float],
+      list: Array[Int],
+      from: Int,
+      to: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      best: Int,
+      query: Query
+  ): Int =
+    // Perf: a plain loop over a cell's items, nearest box first, stopping at the first box beyond
+    // the best hit: the hot loop of a ray from the eye (docs/performance.md, round 20).
+    var bestT = query.distance
+    var bestI = best
+    var bestF = query.face
+    var i     = from
+    while i < to && gaps(list(i)) <= bestT do
+      val item  = list(i)
+      val k     = items.owner(item)
+      val f     = items.face(item)
+      val shape = prims.index(k)
+      if f >= 0 then
+        val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
+        val t    = mesh.faceDistance(f, bestT, ox, oy, oz, dx, dy, dz)
+        if t <= bestT && t < Double.PositiveInfinity then
+          val number = mesh.faceNumber(f)
+          if t < bestT || shape < bestI || shape == bestI && number < bestF then
+            bestT = t; bestI = shape; bestF = number
+      else
+        val t = Primitives.distance(prims, k, bestT, ox, oy, oz, dx, dy, dz, query)
+        if t <= bestT && t < Double.PositiveInfinity && (t < bestT || shape < bestI) then
+          bestT = t; bestI = shape; bestF = -1
+      i += 1
+    query.distance = bestT
+    query.face = bestF
+    bestI
 
   /** True when some walk takes more than one node (of this tree or a mesh's): only then can a
     * shadow ray's guess ([[blocks]]) save a walk more than it costs.

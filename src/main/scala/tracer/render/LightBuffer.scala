@@ -2,7 +2,7 @@ package tracer.render
 
 /** A point light's light buffer (Haines and Greenberg, 1986): the directions around the light as
   * the six faces of a cube, the part of each face that the scene covers cut into cells, and in
-  * each cell the items (a bounded shape, or one face of a mesh: [[ShadowItems]]) whose boxes
+  * each cell the items (a bounded shape, or one face of a mesh: [[BufferItems]]) whose boxes
   * some direction of the cell meets. Immutable after [[LightBuffer.build]].
   *
   * A shadow ray from a point toward the light keeps one direction as seen from the light along
@@ -25,7 +25,7 @@ package tracer.render
   * @param highs       per face f, at 2f: the window's high u and v
   * @param sizes       per face f, at 3f: its cells along u and along v, and its first cell's number
   * @param start       cell c's items are `items(start(c) until start(c + 1))`
-  * @param items       the cells' items, numbers in the [[ShadowItems]]
+  * @param items       the cells' items, numbers in the [[BufferItems]]
   * @param always      the items tested on every ray (those too near the light or too large)
   * @param reachLimit  the longest shadow ray the buffer answers
   */
@@ -101,7 +101,7 @@ object LightBuffer:
   val RaysPerItem: Long = 4
 
   /** The buffer of the light at (lx, ly, lz) over `items`, or None when it has nothing to bin. */
-  def build(lx: Double, ly: Double, lz: Double, items: ShadowItems): Option[LightBuffer] =
+  def build(lx: Double, ly: Double, lz: Double, items: BufferItems): Option[LightBuffer] =
     val n   = items.size
     val rel = new Array[Double](6 * n)
     // Perf: the build's loops run once a light, before the render, over up to millions of items,
@@ -362,24 +362,3 @@ object LightBuffer:
   /** As [[low]] for the greatest, from the high end x. */
   private inline def high(x: Double, aFrom: Double, aHigh: Double): Double =
     Math.min(1 + Slack, Math.max(x / aFrom, x / aHigh) + Slack)
-
-/** The items a [[LightBuffer]] bins, numbered from 0: each primitive of a [[Bvh]] that is not a
-  * mesh, and each face of each of its meshes, with its box.
-  *
-  * @param boxes  item i's box at 6i (low x, y, z, then high), widened by 10⁻⁷ of its size
-  * @param owner  item i's primitive, in the tree's leaf order
-  * @param face   item i's face in its mesh's leaf order, or −1 for a primitive that is not a mesh
-  */
-final class ShadowItems(
-    private[render] val boxes: Array[Double],
-    private[render] val owner: Array[Int],
-    private[render] val face: Array[Int]
-):
-  /** The number of items. */
-  def size: Int = owner.length
-
-/** Building [[ShadowItems]]. */
-object ShadowItems:
-  /** No items. */
-  val empty: ShadowItems =
-    ShadowItems(Array.emptyDoubleArray, Array.emptyIntArray, Array.emptyIntArray)

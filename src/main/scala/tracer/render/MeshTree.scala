@@ -70,7 +70,24 @@ final class MeshTree(
       dx: Double,
       dy: Double,
       dz: Double
-  ): Boolean = MeshWalk.face(planes, at, vertices, k, limit, ox, oy, oz, dx, dy, dz) < limit
+  ): Boolean = faceDistance(k, limit, ox, oy, oz, dx, dy, dz) < limit
+
+  /** The distance to leaf-order face `k` as [[nearest]] tests it, +∞ on a miss (or on a hit
+    * beyond `cutoff`, which it need not finish).
+    */
+  private[render] def faceDistance(
+      k: Int,
+      cutoff: Double,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double = MeshWalk.face(planes, at, vertices, k, cutoff, ox, oy, oz, dx, dy, dz)
+
+  /** The mesh's number of leaf-order face `k`: the face [[nearest]] names. */
+  private[render] def faceNumber(k: Int): Int = faces(k)
 
   /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the mesh's
     * nearest face at a t ≤ `limit` (+∞ when there is none), the face itself left in

@@ -113,7 +113,12 @@ object Renderer:
       val shadowRays = config.integrator match
         case Integrator.Whitted(ShadingMode.Full, n) => config.columns.toLong * config.rows * n * n
         case _                                       => 0L
-      val world = World(scene, pool, shadowRays)
+      // Every primary ray starts at the camera's location: enough to tell World whether a buffer
+      // of the camera's pays for itself.
+      val eyeRays = config.integrator match
+        case Integrator.Whitted(_, n)  => config.columns.toLong * config.rows * n * n
+        case settings: Integrator.Path => config.columns.toLong * config.rows * settings.samples
+      val world = World(scene, pool, shadowRays, eyeRays)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

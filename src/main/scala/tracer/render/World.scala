@@ -16,8 +16,16 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   (its samples: 0 for none); when that is at least [[LightBuffer.RaysPerItem]] an item its
   *   shadow rays may meet, each point light gets a [[LightBuffer]] (in a world that lets light
   *   through, over its opaque shapes, unless a clear shape is a mesh)
+  * @param eyeRays about how many rays the render will trace from the camera's location (its
+  *   primary rays: pixels times samples); when that is at least [[EyeBuffer.RaysPerItem]] an item
+  *   of the tree, the camera gets an [[EyeBuffer]] that answers them
   */
-final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRays: Long = 0):
+final class World(
+    scene: Scene,
+    pool: Option[ExecutionContext] = None,
+    shadowRays: Long = 0,
+    eyeRays: Long = 0
+):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
@@ -120,18 +128,36 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
   private val shadowUnbounded: Primitives = if transmits then opaqueUnbounded else unbounded
   private val buffered                    = (!transmits || clearWalks) && shadowTree.deep &&
     lights.exists(_.area.isEmpty) && shadowRays >= LightBuffer.RaysPerItem * shadowTree.itemCount
-  private val items: ShadowItems = if buffered then shadowTree.shadowItems else ShadowItems.empty
-  // The point lights' buffers, built on the pool when there is one (a light a task).
-  private val buffers: IArray[Option[LightBuffer]] =
+  private val items: BufferItems = if buffered then shadowTree.bufferItems else BufferItems.empty
+
+  // Perf: rays from the camera look up their cell of its buffer and test a few items, nearest
+  // first, instead of walking the tree (docs/performance.md, round 20); only where the walk is
+  // more than a node and the render long enough to pay for the buffer. Its items are all the
+  // tree's (the point lights' when those are the same).
+  private val eyed = bvh.deep && eyeRays >= EyeBuffer.RaysPerItem * bvh.itemCount
+
+  // The point lights' buffers and the camera's, built on the pool when there is one (a buffer a
+  // task).
+  private val (buffers, eye): (IArray[Option[LightBuffer]], Option[EyeBuffer]) =
     def build(l: Light) =
       if !buffered || l.area.isDefined then None
       else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
+    def buildEye() =
+      if !eyed then None
+      else
+        val from  = scene.camera.location
+        val every = if buffered && (shadowTree eq bvh) then items else bvh.bufferItems
+        EyeBuffer.build(from.x, from.y, from.z, every)
     pool match
-      case Some(context) if buffered && lights.count(_.area.isEmpty) > 1 =>
+      case Some(context) if eyed || buffered && lights.count(_.area.isEmpty) > 1 =>
         given ExecutionContext = context
+        val eyeBuilt           = Future(buildEye())
         val built              = Future.traverse(lights.toSeq)(l => Future(build(l)))
-        IArray.from(Await.result(built, Duration.Inf))
-      case _ => lights.map(build)
+        (IArray.from(Await.result(built, Duration.Inf)), Await.result(eyeBuilt, Duration.Inf))
+      case _ => (lights.map(build), buildEye())
+
+  /** The camera's buffer when the world has one. */
+  private[render] def eyeBuffer: Option[EyeBuffer] = eye
 
   /** The buffer of light `k` when it has one (a point light, in a world that builds them). */
   private[render] def lightBuffer(k: Int): Option[LightBuffer] = buffers(k)
@@ -266,14 +292,50 @@ final class World(scene: Scene, pool: Option[ExecutionContext] = None, shadowRay
       query: Query
   ): Int =
     // Perf: the unbounded shapes first (their nearest distance left in query.distance), then the
-    // hierarchy, pruned by the nearest of them. Each step is a method of its own, so this one is
-    // small and has no loop: the JIT compiles it once, quickly (docs/performance.md, round 9).
+    // hierarchy, pruned by the nearest of them, or for a ray from the camera, its buffer. Each
+    // step is a method of its own, so this one is small and has no loop: the JIT compiles it
+    // once, quickly (docs/performance.md, round 9).
     val best   = nearestUnbounded(ox, oy, oz, dx, dy, dz, limit, query)
-    val winner = bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+    val winner = eye match
+      case Some(buffer) if buffer.answers(ox, oy, oz) =>
+        nearestFromEye(buffer, ox, oy, oz, dx, dy, dz, best, query)
+      case _ => bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
     if winner == Int.MaxValue then
       query.distance = Double.PositiveInfinity
       -1
     else winner
+
+  /** [[Bvh.nearest]]'s answer for a ray from the camera's location, competing with shape `best`
+    * at `query.distance`, from the camera's buffer: the items tested on every ray, then those of
+    * the ray's cell (the tree when the buffer does not answer the ray).
+    */
+  private def nearestFromEye(
+      buffer: EyeBuffer,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      best: Int,
+      query: Query
+  ): Int =
+    val cell = buffer.cell(dx, dy, dz)
+    if cell == LightBuffer.Walk then
+      bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+    else
+      val cells  = buffer.cells
+      val items  = buffer.items
+      val gaps   = buffer.gaps
+      val always = cells.always
+      query.face = -1
+      val first =
+        bvh.nearestAmong(items, gaps, always, 0, always.length, ox, oy, oz, dx, dy, dz, best, query)
+      if cell < 0 then first
+      else
+        val from = cells.start(cell)
+        val to   = cells.start(cell + 1)
+        bvh.nearestAmong(items, gaps, cells.items, from, to, ox, oy, oz, dx, dy, dz, first, query)
 
   /** The index of the unbounded shape that the ray from (ox, oy, oz) in unit direction
     * (dx, dy, dz) hits first at a t ≤ `limit` (the first in index order on a tie), or

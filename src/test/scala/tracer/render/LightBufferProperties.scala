@@ -3,22 +3,8 @@ package tracer.render
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{
-  Box,
-  Cone,
-  Csg,
-  CsgOperation,
-  Cylinder,
-  Mesh,
-  Placed,
-  Plane,
-  Ray,
-  Shape,
-  Sphere,
-  Torus,
-  Triangle
-}
-import tracer.math.{Placement, Vec3}
+import tracer.geometry.{Box, Plane, Ray, Shape, Sphere}
+import tracer.math.Vec3
 import tracer.scene.{Camera, Light, Scene, SceneObject, Surface}
 import tracer.testkit.Generators.unitVec
 
@@ -32,55 +18,7 @@ class LightBufferProperties extends ScalaCheckSuite:
   override def scalaCheckTestParameters =
     super.scalaCheckTestParameters.withMinSuccessfulTests(60)
 
-  private val small     = Gen.choose(-6.0, 6.0)
-  private val point     = for x <- small; y <- small; z <- small yield Vec3(x, y, z)
-  private val gridPoint = for x <- Gen.choose(-4, 4); y <- Gen.choose(-4, 4); z <- Gen.choose(-4, 4)
-  yield Vec3(x, y, z)
-  private val size = Gen.choose(0.2, 2.5)
-
-  /** A bumpy grid of squares (two faces each) at height about y, n × n squares. */
-  private def terrain(n: Int, y: Double, bump: Double): Mesh =
-    val vertices =
-      IArray.from(for
-        i <- 0 to n; j <- 0 to n
-        c <- List(-4 + 8.0 * i / n, y + bump * Math.sin(i * 1.7 + j * 0.9), -4 + 8.0 * j / n)
-      yield c)
-    def at(i: Int, j: Int) = i * (n + 1) + j
-    val corners            = IArray.from(for
-      i <- 0 until n; j <- 0 until n
-      c <- List(at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1))
-    yield c)
-    Mesh(vertices, corners)
-
-  private val triangle = Gen
-    .oneOf(point, gridPoint)
-    .flatMap { p =>
-      Gen.zip(Gen.const(p), Gen.oneOf(point, gridPoint), Gen.oneOf(point, gridPoint))
-    }
-    .retryUntil(Triangle.isProper.tupled)
-    .map(Triangle(_, _, _))
-
-  private val placement: Gen[Placement] =
-    for s <- Gen.choose(0.3, 2.0); r <- point; t <- point yield Placement(s, r * 18, t)
-
-  private val general: Gen[Shape] = Gen.oneOf(
-    for c <- Gen.oneOf(point, gridPoint); d <- size yield Box(c, c + Vec3(d, d * 0.5, d)),
-    for b <- point; axis <- unitVec; h <- size; r <- size; open <- Gen.oneOf(true, false)
-    yield Cylinder(b, b + axis * h, r * 0.5, open),
-    for b <- point; axis <- unitVec; h <- size; r <- size yield Cone(b, 0.0, b + axis * h, r),
-    for r <- size; p <- placement yield Placed(Torus(r, r * 0.3), p),
-    for c <- point; d <- size
-    yield Csg(CsgOperation.Difference, Vector(Box(c, c + Vec3(d, d, d)), Sphere(c, d * 0.7)))
-  )
-
-  private val shape: Gen[Shape] = Gen.frequency(
-    4 -> (for c <- Gen.oneOf(point, gridPoint); r <- Gen.choose(0.05, 1.5) yield Sphere(c, r)),
-    4 -> triangle,
-    2 -> (for n <- Gen.choose(2, 12); y <- small; b <- Gen.choose(0.0, 1.0)
-    yield terrain(n, y, b)),
-    2 -> general,
-    1 -> Gen.choose(-6, 6).map(d => Plane.at(Vec3.UnitY, d))
-  )
+  import BufferWorlds.*
 
   private val light: Gen[Vec3] = Gen.oneOf(point, gridPoint, point.map(_ * 3))
 

@@ -1,0 +1,22 @@
+package tracer.render
+
+/** The items a [[LightBuffer]] or an [[EyeBuffer]] bins, numbered from 0: each primitive of a [[Bvh]] that is not a
+  * mesh, and each face of each of its meshes, with its box.
+  *
+  * @param boxes  item i's box at 6i (low x, y, z, then high), widened by 10⁻⁷ of its size
+  * @param owner  item i's primitive, in the tree's leaf order
+  * @param face   item i's face in its mesh's leaf order, or −1 for a primitive that is not a mesh
+  */
+final class BufferItems(
+    private[render] val boxes: Array[Double],
+    private[render] val owner: Array[Int],
+    private[render] val face: Array[Int]
+):
+  /** The number of items. */
+  def size: Int = owner.length
+
+/** Building [[BufferItems]]. */
+object BufferItems:
+  /** No items. */
+  val empty: BufferItems =
+    BufferItems(Array.emptyDoubleArray, Array.emptyIntArray, Array.emptyIntArray)

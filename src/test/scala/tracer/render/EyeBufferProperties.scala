@@ -1,0 +1,144 @@
+package tracer.render
+
+import munit.ScalaCheckSuite
+import org.scalacheck.Gen
+import org.scalacheck.Prop.forAll
+import tracer.geometry.{Mesh, Plane, Ray, Shape, Sphere}
+import tracer.math.Vec3
+import tracer.scene.{Camera, Light, Scene, SceneObject, Surface}
+import tracer.testkit.Generators.unitVec
+
+/** The camera's [[EyeBuffer]] answers every ray from the camera's location as the tree's
+  * nearest-hit walk does ([[World.nearestAlong]] with and without the buffer): the same shape, the
+  * same distance to the bit and, on a mesh, the same face, with the eye anywhere, on a coarse grid
+  * (so that directions along the buffer's cube edges are common), inside shapes, on their surfaces
+  * and far away, and rays in every direction, through grid points and along the axes.
+  */
+class EyeBufferProperties extends ScalaCheckSuite:
+  import BufferWorlds.*
+
+  override def scalaCheckTestParameters =
+    super.scalaCheckTestParameters.withMinSuccessfulTests(60)
+
+  private def sceneOf(shapes: Seq[Shape], eye: Vec3): Scene =
+    Scene(
+      Camera(eye, eye + Vec3(0.3, -0.2, 1)),
+      lights = Vector(Light(Vec3(2, 9, -4))),
+      objects = shapes.map(SceneObject(_)).toVector
+    )
+
+  /** A world with the camera's buffer, and the same world without it. */
+  private def worlds(shapes: Seq[Shape], eye: Vec3): (World, World) =
+    val scene = sceneOf(shapes, eye)
+    (World(scene, eyeRays = Long.MaxValue), World(scene))
+
+  /** Where the eye goes: anywhere, on the grid, far off, or on (or inside) one of the shapes. */
+  private def eyeFor(shapes: Seq[Shape]): Gen[Vec3] =
+    val onSurface = for o <- point; d <- unitVec yield
+      val w = World(sceneOf(shapes, Vec3(0, 0, -20)))
+      val q = w.newQuery()
+      val i = w.nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q)
+      if i < 0 then o else o + d * q.distance
+    val far = for d <- unitVec; e <- Gen.choose(2, 7) yield d * Math.pow(10, e)
+    Gen.frequency(3 -> point, 3 -> gridPoint, 3 -> onSurface, 1 -> far)
+
+  /** Points where two faces of a mesh meet, so that rays through them tie: a corner, or the
+    * middle of an edge of a face.
+    */
+  private def seams(shapes: Seq[Shape]): Gen[Vec3] =
+    val meshes = shapes.collect { case m: Mesh => m }
+    if meshes.isEmpty then point
+    else
+      for
+        m <- Gen.oneOf(meshes)
+        f <- Gen.choose(0, m.faceCount - 1)
+        e <- Gen.choose(0, 2)
+        w <- Gen.oneOf(0.0, 0.5)
+      yield
+        def corner(c: Int) =
+          val v = 3 * m.corners(3 * f + c % 3)
+          Vec3(m.vertices(v), m.vertices(v + 1), m.vertices(v + 2))
+        corner(e) * (1 - w) + corner(e + 1) * w
+
+  /** Directions from the eye: any, toward grid points, points of space and the meshes' seams,
+    * and along the axes, the cube's edges and its diagonals.
+    */
+  private def directions(shapes: Seq[Shape], eye: Vec3): Gen[List[Vec3]] =
+    val toward = Gen
+      .oneOf(point, gridPoint, seams(shapes), seams(shapes))
+      .map(p => (p - eye).normalised.getOrElse(Vec3.UnitZ))
+    val axial = for
+      x <- Gen.oneOf(-1, 0, 1); y <- Gen.oneOf(-1, 0, 1); z <- Gen.oneOf(-1, 0, 1)
+      if x != 0 || y != 0 || z != 0
+    yield Vec3(x, y, z).normalised.get
+    Gen.listOfN(80, Gen.frequency(3 -> unitVec, 5 -> toward, 1 -> axial))
+
+  private val cases: Gen[(Seq[Shape], Vec3, List[Vec3])] =
+    for
+      n      <- Gen.choose(2, 60)
+      shapes <- Gen.listOfN(n, shape)
+      eye    <- eyeFor(shapes)
+      ds     <- directions(shapes, eye)
+    yield (shapes, eye, ds)
+
+  property("the camera's buffer answers each ray from the eye as the tree's walk"):
+    forAll(cases) { (shapes, eye, ds) =>
+      val (buffered, walked) = worlds(shapes, eye)
+      // Every world whose walk goes deeper than a node gets the buffer (no vacuous cases).
+      assertEquals(buffered.eyeBuffer.isDefined, buffered.tree.deep)
+      val (qb, qw) = (buffered.newQuery(), walked.newQuery())
+      for d <- ds; limit <- List(Double.PositiveInfinity, 3.5) do
+        val seen = s"eye $eye, direction $d, limit $limit"
+        val ib   = buffered.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, limit, qb)
+        val iw   = walked.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, limit, qw)
+        assertEquals(ib, iw, seen)
+        assertEquals(
+          java.lang.Double.doubleToRawLongBits(qb.distance),
+          java.lang.Double.doubleToRawLongBits(qw.distance),
+          seen
+        )
+        if iw >= 0 && shapes(iw).isInstanceOf[Mesh] then assertEquals(qb.face, qw.face, seen)
+    }
+
+  test("a world of many faces gets a buffer of the camera's, filled; a short render none"):
+    val shapes = Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1), Plane.at(Vec3.UnitY, -1))
+    val scene  = sceneOf(shapes, Vec3(0, 3, -9))
+    val buffer = World(scene, eyeRays = Long.MaxValue).eyeBuffer
+    assert(buffer.isDefined)
+    assert(buffer.get.cells.cellCount > 1000, buffer.get.cells.cellCount)
+    assert(buffer.get.cells.entryCount >= 2 * 30 * 30, buffer.get.cells.entryCount)
+    assert(World(scene, eyeRays = 1000).eyeBuffer.isEmpty)
+    assert(
+      World(
+        sceneOf(Seq(Sphere(Vec3.Zero, 1)), Vec3(0, 0, -5)),
+        eyeRays = Long.MaxValue
+      ).eyeBuffer.isEmpty
+    )
+
+  test("a buffer's items are sorted by their boxes' distance from the eye"):
+    val shapes = Seq(terrain(12, 0, 0.5), Sphere(Vec3(0, 2, 0), 1), Sphere(Vec3(2, 1, 3), 0.5))
+    val buffer = World(sceneOf(shapes, Vec3(1, 4, -7)), eyeRays = Long.MaxValue).eyeBuffer.get
+    val gaps   = buffer.gaps.toSeq
+    assertEquals(gaps, gaps.sorted)
+    assert(gaps.head >= 0 && gaps.last > 0, gaps)
+
+  test("shading through the camera's buffer gives the walk's colours, bit for bit"):
+    val shapes = Seq(
+      terrain(24, 0, 0.6),
+      Sphere(Vec3(0, 1.5, 0), 1),
+      Plane.at(Vec3.UnitY, -1),
+      tracer.geometry.Box(Vec3(1, 0, 1), Vec3(2, 1, 2))
+    )
+    val eye   = Vec3(0, 3, -9)
+    val scene = Scene(
+      Camera(eye, Vec3.Zero),
+      lights = Vector(Light(Vec3(-4, 7, -5)), Light(Vec3(5, 3, -2))),
+      objects = shapes.map(SceneObject(_, Surface(reflection = 0.3))).toVector :+
+        SceneObject(Sphere(Vec3(-1.5, 1, -1), 0.6), Surface(transmit = 0.7, ior = 1.5))
+    )
+    val walked   = Shading(World(scene), ShadingMode.Full)
+    val buffered = Shading(World(scene, eyeRays = Long.MaxValue), ShadingMode.Full)
+    for i <- 0 until 40; j <- 0 until 30 do
+      val d   = Vec3(-0.4 + i * 0.02, -0.35 + j * 0.02, 1).normalised.get
+      val ray = Ray(eye, d)
+      assertEquals(buffered.colour(ray, 5), walked.colour(ray, 5), ray.toString)
