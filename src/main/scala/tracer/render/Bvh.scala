@@ -249,10 +249,11 @@ final class Bvh(
     hit
 
   /** The index in `shapes` of the shape that the ray meets first among the items `list(from
-    * until to)` of [[bufferItems]] (nondecreasing in `gaps`, each item's box's distance from the
-    * ray's origin, rounded down), competing with shape `best` at `query.distance` (its face in
-    * `query.face`, −1 for a shape that is not a mesh): [[nearest]]'s answer among them, the
-    * distance and face left in the query. Ties go to the lower index, then the lower face.
+    * until to)` of [[bufferItems]] (nondecreasing in `gaps`, each item's box's distance from a
+    * centre, rounded down, that the ray starts no more than `behind` beyond), competing with shape
+    * `best` at `query.distance` (its face in `query.face`, −1 for a shape that is not a mesh):
+    * [[nearest]]'s answer among them, the distance and face left in the query. Ties go to the
+    * lower index, then the lower face.
     */
   private[render] def nearestAmong(
       items: BufferItems,
@@ -266,6 +267,7 @@ final class Bvh(
       dx: Double,
       dy: Double,
       dz: Double,
+      behind: Double,
       best: Int,
       query: Query
   ): Int =
@@ -275,7 +277,7 @@ final class Bvh(
     var bestI = best
     var bestF = query.face
     var i     = from
-    while i < to && gaps(list(i)) <= bestT do
+    while i < to && gaps(list(i)) <= bestT + behind do
       val item  = list(i)
       val k     = items.owner(item)
       val f     = items.face(item)

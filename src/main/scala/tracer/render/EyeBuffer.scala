@@ -1,27 +1,31 @@
 package tracer.render
 
-/** The camera's item buffer (after Weghorst, Hooper and Greenberg, 1984, and POV-Ray's vista
-  * buffer): a [[LightBuffer]]'s cells around the eye, over the items sorted by their distance from
-  * it. A ray that leaves the eye looks up its direction's cell and tests that cell's few items,
-  * nearest box first, stopping at the first box that lies beyond the best hit so far, in place of
-  * the nearest-hit walk down the tree ([[World.nearestAlong]]). Immutable after
-  * [[EyeBuffer.build]].
+/** A viewpoint's item buffer (after Weghorst, Hooper and Greenberg, 1984, and POV-Ray's vista
+  * buffer): a [[LightBuffer]]'s cells around a centre, over the items sorted by their distance
+  * from it. A ray whose line leaves the centre looks up its direction's cell and tests that
+  * cell's few items, nearest box first, stopping at the first box that lies beyond the best hit
+  * so far, in place of the nearest-hit walk down the tree ([[World.nearestAlong]]). The centre is
+  * the camera's location (its primary rays start there) or the camera's mirror image in a
+  * mirroring plane (the rays that plane reflects from the camera's lie on lines through it).
+  * Immutable after [[EyeBuffer.build]].
   *
-  * Why exact: a ray from the eye meets an item only at a point of the item's widened box, and that
-  * point's direction from the eye is the ray's own, so the item is binned in the ray's cell (the
-  * light buffer's argument; here the ray starts at the buffer's centre itself, so its direction
-  * carries no error from a far end). The point is no nearer the eye than the box, so an item whose
-  * box lies beyond the best hit cannot win; one at exactly that distance is still tested, as a tie
-  * goes to the lower index. Each item is tested as the walk tests it, so the answer is the walk's
-  * bit for bit (`EyeBufferProperties`).
+  * Why exact: a ray meets an item only at a point of the item's widened box. For a ray from the
+  * centre, that point's direction from the centre is the ray's own; for a ray that starts at a
+  * distance s beyond the centre on a line through it, within 10⁻⁹ s ([[behind]] checks), the
+  * point's direction differs from the ray's by at most 10⁻⁹, far below the cells' slack of 10⁻⁷
+  * (the light buffer's argument). So the item is binned in the ray's cell. And the point lies no
+  * nearer the ray's start than the box's distance from the centre less s, so an item whose box
+  * lies beyond the best hit plus s cannot win; one at exactly that bound is still tested, as a
+  * tie goes to the lower index. Each item is tested as the walk tests it, so the answer is the
+  * walk's bit for bit (`EyeBufferProperties`).
   *
-  * @param x      the eye's x: the buffer answers the rays that start exactly there
-  * @param y      the eye's y
-  * @param z      the eye's z
+  * @param x      the centre's x
+  * @param y      the centre's y
+  * @param z      the centre's z
   * @param cells  the cells, over [[items]]: each cell's items (and the ones tested on every ray)
   *   in increasing order, so nearest box first
   * @param items  the items, sorted by [[gaps]]
-  * @param gaps   item i's box's distance from the eye, rounded down: nondecreasing in i
+  * @param gaps   item i's box's distance from the centre, rounded down: nondecreasing in i
   */
 final class EyeBuffer private (
     val x: Double,
@@ -31,11 +35,27 @@ final class EyeBuffer private (
     private[render] val items: BufferItems,
     private[render] val gaps: Array[Float]
 ):
-  /** True when a ray from (ox, oy, oz) starts at the eye, so this buffer answers it. */
-  inline def answers(ox: Double, oy: Double, oz: Double): Boolean =
-    ox == x && oy == y && oz == z
+  /** How far the ray from (ox, oy, oz) in unit direction (dx, dy, dz) starts beyond the centre,
+    * rounded up, when this buffer answers it: 0 for a ray from the centre itself, else the
+    * distance when the ray points away from the centre on a line within 10⁻⁹ of that distance
+    * from it; −1 for a ray it does not answer.
+    */
+  def behind(ox: Double, oy: Double, oz: Double, dx: Double, dy: Double, dz: Double): Double =
+    if ox == x && oy == y && oz == z then 0.0
+    else
+      val wx = ox - x
+      val wy = oy - y
+      val wz = oz - z
+      // The line's distance from the centre: |w × d| for the unit d.
+      val cx = wy * dz - wz * dy
+      val cy = wz * dx - wx * dz
+      val cz = wx * dy - wy * dx
+      val w2 = wx * wx + wy * wy + wz * wz
+      if wx * dx + wy * dy + wz * dz > 0 && cx * cx + cy * cy + cz * cz <= EyeBuffer.Aligned * w2
+      then Math.sqrt(w2) * (1 + 1e-9)
+      else -1.0
 
-  /** The cell of the ray from the eye in unit direction (dx, dy, dz): as [[LightBuffer.cell]]. */
+  /** The cell of the ray in unit direction (dx, dy, dz) from the centre: as [[LightBuffer.cell]]. */
   def cell(dx: Double, dy: Double, dz: Double): Int =
     // The light buffer is looked up by a shadow ray's direction toward its centre, −e.
     cells.cell(-dx, -dy, -dz, 0.0)
@@ -47,7 +67,12 @@ object EyeBuffer:
     */
   val RaysPerItem: Long = 4
 
-  /** The buffer of the eye at (ex, ey, ez) over `items`, or None when it has nothing to bin. */
+  /** The square of the largest distance of a ray's line from the centre, relative to the ray's
+    * start's distance, that [[EyeBuffer.behind]] accepts: (10⁻⁹)².
+    */
+  private val Aligned = 1e-18
+
+  /** The buffer of the centre (ex, ey, ez) over `items`, or None when it has nothing to bin. */
   def build(ex: Double, ey: Double, ez: Double, items: BufferItems): Option[EyeBuffer] =
     val n = items.size
     // Perf: as LightBuffer.build, plain loops on flat arrays (run cold, once a picture). Each

@@ -108,9 +108,10 @@ object Renderer:
         pool: Option[ExecutionContext] = None
     ): Frame =
       val projection = Projection(scene.camera, config.film)
-      // Whitted's full mode traces a shadow ray a sample and point light at least: enough to
-      // tell World whether its lights' buffers pay for themselves.
-      val shadowRays = config.integrator match
+      // Whitted's full mode traces a shadow ray toward each point light from each sample's hit at
+      // least, and reflects a sample that meets a mirroring plane: enough to tell World whether
+      // its lights' buffers and its camera's mirror images' pay for themselves.
+      val fullRays = config.integrator match
         case Integrator.Whitted(ShadingMode.Full, n) => config.columns.toLong * config.rows * n * n
         case _                                       => 0L
       // Every primary ray starts at the camera's location: enough to tell World whether a buffer
@@ -118,7 +119,7 @@ object Renderer:
       val eyeRays = config.integrator match
         case Integrator.Whitted(_, n)  => config.columns.toLong * config.rows * n * n
         case settings: Integrator.Path => config.columns.toLong * config.rows * settings.samples
-      val world = World(scene, pool, shadowRays, eyeRays)
+      val world = World(scene, pool, shadowRays = fullRays, eyeRays, mirrorRays = fullRays)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

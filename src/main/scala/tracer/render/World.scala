@@ -19,12 +19,17 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   * @param eyeRays about how many rays the render will trace from the camera's location (its
   *   primary rays: pixels times samples); when that is at least [[EyeBuffer.RaysPerItem]] an item
   *   of the tree, the camera gets an [[EyeBuffer]] that answers them
+  * @param mirrorRays about how many of the camera's rays the render will reflect off its mirroring
+  *   planes (Whitted's full mode: its primary rays); when that is at least
+  *   [[EyeBuffer.RaysPerItem]] an item of the tree, each plane that mirrors gets an [[EyeBuffer]]
+  *   around the camera's mirror image, which answers the rays it reflects from the camera's
   */
 final class World(
     scene: Scene,
     pool: Option[ExecutionContext] = None,
     shadowRays: Long = 0,
-    eyeRays: Long = 0
+    eyeRays: Long = 0,
+    mirrorRays: Long = 0
 ):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
@@ -130,34 +135,43 @@ final class World(
     lights.exists(_.area.isEmpty) && shadowRays >= LightBuffer.RaysPerItem * shadowTree.itemCount
   private val items: BufferItems = if buffered then shadowTree.bufferItems else BufferItems.empty
 
-  // Perf: rays from the camera look up their cell of its buffer and test a few items, nearest
-  // first, instead of walking the tree (docs/performance.md, round 20); only where the walk is
-  // more than a node and the render long enough to pay for the buffer. Its items are all the
-  // tree's (the point lights' when those are the same).
-  private val eyed = bvh.deep && eyeRays >= EyeBuffer.RaysPerItem * bvh.itemCount
+  // Perf: rays from the camera, and those a mirroring plane reflects from it, look up their cell
+  // of a buffer around the camera (or its mirror image) and test a few items, nearest first,
+  // instead of walking the tree (docs/performance.md, round 20); only where the walk is more than
+  // a node and the render long enough to pay for the buffer. Their items are all the tree's (the
+  // point lights' when those are the same).
+  private def worth(rays: Long)     = bvh.deep && rays >= EyeBuffer.RaysPerItem * bvh.itemCount
+  private val centres: IArray[Vec3] =
+    val eye    = scene.camera.location
+    val images = if worth(mirrorRays) then World.mirrorImages(eye, objects) else IArray.empty[Vec3]
+    if worth(eyeRays) then eye +: images else images
 
-  // The point lights' buffers and the camera's, built on the pool when there is one (a buffer a
+  // The point lights' buffers and the centres', built on the pool when there is one (a buffer a
   // task).
-  private val (buffers, eye): (IArray[Option[LightBuffer]], Option[EyeBuffer]) =
+  private val (buffers, eyes): (IArray[Option[LightBuffer]], IArray[EyeBuffer]) =
     def build(l: Light) =
       if !buffered || l.area.isDefined then None
       else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
-    def buildEye() =
-      if !eyed then None
-      else
-        val from  = scene.camera.location
-        val every = if buffered && (shadowTree eq bvh) then items else bvh.bufferItems
-        EyeBuffer.build(from.x, from.y, from.z, every)
+    lazy val every      = if buffered && (shadowTree eq bvh) then items else bvh.bufferItems
+    def around(c: Vec3) = EyeBuffer.build(c.x, c.y, c.z, every)
     pool match
-      case Some(context) if eyed || buffered && lights.count(_.area.isEmpty) > 1 =>
+      case Some(context) if centres.nonEmpty || buffered && lights.count(_.area.isEmpty) > 1 =>
         given ExecutionContext = context
-        val eyeBuilt           = Future(buildEye())
+        val eyesBuilt          = Future.traverse(centres.toSeq)(c => Future(around(c)))
         val built              = Future.traverse(lights.toSeq)(l => Future(build(l)))
-        (IArray.from(Await.result(built, Duration.Inf)), Await.result(eyeBuilt, Duration.Inf))
-      case _ => (lights.map(build), buildEye())
+        (
+          IArray.from(Await.result(built, Duration.Inf)),
+          IArray.from(Await.result(eyesBuilt, Duration.Inf).flatten)
+        )
+      case _ => (lights.map(build), centres.flatMap(around))
 
   /** The camera's buffer when the world has one. */
-  private[render] def eyeBuffer: Option[EyeBuffer] = eye
+  private[render] def eyeBuffer: Option[EyeBuffer] =
+    val eye = scene.camera.location
+    eyes.find(b => b.x == eye.x && b.y == eye.y && b.z == eye.z)
+
+  /** The buffers around the camera and its mirror images (tests observe which rays they answer). */
+  private[render] def eyeBuffers: IArray[EyeBuffer] = eyes
 
   /** The buffer of light `k` when it has one (a point light, in a world that builds them). */
   private[render] def lightBuffer(k: Int): Option[LightBuffer] = buffers(k)
@@ -296,21 +310,41 @@ final class World(
     // step is a method of its own, so this one is small and has no loop: the JIT compiles it
     // once, quickly (docs/performance.md, round 9).
     val best   = nearestUnbounded(ox, oy, oz, dx, dy, dz, limit, query)
-    val winner = eye match
-      case Some(buffer) if buffer.answers(ox, oy, oz) =>
-        nearestFromEye(buffer, ox, oy, oz, dx, dy, dz, best, query)
-      case _ => bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+    val winner = nearestBounded(ox, oy, oz, dx, dy, dz, best, query)
     if winner == Int.MaxValue then
       query.distance = Double.PositiveInfinity
       -1
     else winner
 
-  /** [[Bvh.nearest]]'s answer for a ray from the camera's location, competing with shape `best`
-    * at `query.distance`, from the camera's buffer: the items tested on every ray, then those of
-    * the ray's cell (the tree when the buffer does not answer the ray).
+  /** [[Bvh.nearest]]'s answer for the ray, competing with shape `best` at `query.distance`: from
+    * the first buffer of [[eyeBuffers]] that answers it, else from the walk.
+    */
+  private def nearestBounded(
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      best: Int,
+      query: Query
+  ): Int =
+    // Perf: a plain loop over the (few) buffers, the camera's first.
+    var behind = -1.0
+    var k      = 0
+    while k < eyes.length && behind < 0 do
+      behind = eyes(k).behind(ox, oy, oz, dx, dy, dz)
+      k += 1
+    if behind < 0 then bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+    else nearestFromEye(eyes(k - 1), behind, ox, oy, oz, dx, dy, dz, best, query)
+
+  /** [[Bvh.nearest]]'s answer for a ray that `buffer` answers, starting `behind` beyond its
+    * centre, competing with shape `best` at `query.distance`: the items tested on every ray, then
+    * those of the ray's cell (the tree when the buffer does not answer the ray's direction).
     */
   private def nearestFromEye(
       buffer: EyeBuffer,
+      behind: Double,
       ox: Double,
       oy: Double,
       oz: Double,
@@ -330,12 +364,42 @@ final class World(
       val always = cells.always
       query.face = -1
       val first =
-        bvh.nearestAmong(items, gaps, always, 0, always.length, ox, oy, oz, dx, dy, dz, best, query)
+        bvh.nearestAmong(
+          items,
+          gaps,
+          always,
+          0,
+          always.length,
+          ox,
+          oy,
+          oz,
+          dx,
+          dy,
+          dz,
+          behind,
+          best,
+          query
+        )
       if cell < 0 then first
       else
         val from = cells.start(cell)
         val to   = cells.start(cell + 1)
-        bvh.nearestAmong(items, gaps, cells.items, from, to, ox, oy, oz, dx, dy, dz, first, query)
+        bvh.nearestAmong(
+          items,
+          gaps,
+          cells.items,
+          from,
+          to,
+          ox,
+          oy,
+          oz,
+          dx,
+          dy,
+          dz,
+          behind,
+          first,
+          query
+        )
 
   /** The index of the unbounded shape that the ray from (ox, oy, oz) in unit direction
     * (dx, dy, dz) hits first at a t ≤ `limit` (the first in index order on a tie), or
@@ -489,6 +553,22 @@ object World:
       boxes(at + c) -= m
       boxes(at + 3 + c) += m
       c += 1
+
+  /** Where the camera at `eye` appears in each plane among `objects` that mirrors (its surface's
+    * reflection above 0), as seen from the rays it reflects: the eye mirrored in the plane and
+    * moved off it as shading moves a reflected ray's start ([[Shading.Epsilon]] along the normal
+    * facing the eye), so each such ray lies on a line through that point (none for an eye in the
+    * plane).
+    */
+  private[render] def mirrorImages(eye: Vec3, objects: Array[SceneObject]): IArray[Vec3] =
+    IArray.from(objects.iterator.flatMap { o =>
+      o.shape match
+        case p: tracer.geometry.Plane if o.surface.reflection > 0 =>
+          val side = p.normal.dot(eye) - p.distance
+          val n    = if side > 0 then p.normal else -p.normal
+          Option.when(side != 0)(eye - p.normal * (2 * side) + n * Shading.Epsilon)
+        case _ => None
+    })
 
   /** The positions centre + offset(u, v) of an area light's sub-lights, x, y, z at 3(u·samplesB + v). */
   private def positions(centre: Vec3, light: tracer.scene.AreaLight): IArray[Double] =

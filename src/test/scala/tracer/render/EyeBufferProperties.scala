@@ -100,6 +100,55 @@ class EyeBufferProperties extends ScalaCheckSuite:
         if iw >= 0 && shapes(iw).isInstanceOf[Mesh] then assertEquals(qb.face, qw.face, seen)
     }
 
+  /** A mirroring plane: a normal along an axis or anywhere, at a small distance. */
+  private val mirror: Gen[Plane] =
+    for
+      n <- Gen.oneOf(Gen.const(Vec3.UnitY), Gen.const(Vec3(0, 0, -1)), unitVec)
+      d <- Gen.choose(-3.0, 3.0)
+    yield Plane.at(n, d)
+
+  private val mirrored: Gen[(Seq[Shape], Plane, Vec3, List[Vec3])] =
+    for
+      n      <- Gen.choose(2, 60)
+      shapes <- Gen.listOfN(n, shape)
+      plane  <- mirror
+      eye    <- Gen.oneOf(point, gridPoint).retryUntil(e => plane.normal.dot(e) != plane.distance)
+      ds     <- directions(shapes, eye)
+    yield (shapes, plane, eye, ds)
+
+  property("a mirroring plane's buffer answers each ray it reflects from the eye as the walk"):
+    forAll(mirrored) { (shapes, plane, eye, ds) =>
+      val scene = Scene(
+        Camera(eye, eye + Vec3(0.3, -0.2, 1)),
+        objects = shapes.map(SceneObject(_)).toVector :+
+          SceneObject(plane, Surface(reflection = 0.5))
+      )
+      val buffered = World(scene, mirrorRays = Long.MaxValue)
+      val walked   = World(scene)
+      assertEquals(buffered.eyeBuffers.length, if walked.tree.deep then 1 else 0)
+      val (qb, qw) = (buffered.newQuery(), walked.newQuery())
+      // The rays from the eye that meet the plane first, reflected as shading reflects them.
+      for d <- ds do
+        val i = walked.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, Double.PositiveInfinity, qw)
+        if i == shapes.length then
+          Hits.record(plane, eye.x, eye.y, eye.z, d.x, d.y, d.z, qw.distance, qw)
+          val o    = Vec3(qw.px, qw.py, qw.pz) + Vec3(qw.nx, qw.ny, qw.nz) * Shading.Epsilon
+          val k    = 2 * (qw.sx * d.x + qw.sy * d.y + qw.sz * d.z)
+          val r    = Vec3(d.x - qw.sx * k, d.y - qw.sy * k, d.z - qw.sz * k)
+          val seen = s"eye $eye, direction $d, reflected from $o along $r"
+          for b <- buffered.eyeBuffers do assert(b.behind(o.x, o.y, o.z, r.x, r.y, r.z) > 0, seen)
+          val ib = buffered.nearestAlong(o.x, o.y, o.z, r.x, r.y, r.z, Double.PositiveInfinity, qb)
+          val iw = walked.nearestAlong(o.x, o.y, o.z, r.x, r.y, r.z, Double.PositiveInfinity, qw)
+          assertEquals(ib, iw, seen)
+          assertEquals(
+            java.lang.Double.doubleToRawLongBits(qb.distance),
+            java.lang.Double.doubleToRawLongBits(qw.distance),
+            seen
+          )
+          if iw >= 0 && iw < shapes.length && shapes(iw).isInstanceOf[Mesh] then
+            assertEquals(qb.face, qw.face, seen)
+    }
+
   test("a world of many faces gets a buffer of the camera's, filled; a short render none"):
     val shapes = Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1), Plane.at(Vec3.UnitY, -1))
     val scene  = sceneOf(shapes, Vec3(0, 3, -9))
@@ -122,7 +171,7 @@ class EyeBufferProperties extends ScalaCheckSuite:
     assertEquals(gaps, gaps.sorted)
     assert(gaps.head >= 0 && gaps.last > 0, gaps)
 
-  test("shading through the camera's buffer gives the walk's colours, bit for bit"):
+  test("shading through the camera's buffers gives the walk's colours, bit for bit"):
     val shapes = Seq(
       terrain(24, 0, 0.6),
       Sphere(Vec3(0, 1.5, 0), 1),
@@ -136,8 +185,11 @@ class EyeBufferProperties extends ScalaCheckSuite:
       objects = shapes.map(SceneObject(_, Surface(reflection = 0.3))).toVector :+
         SceneObject(Sphere(Vec3(-1.5, 1, -1), 0.6), Surface(transmit = 0.7, ior = 1.5))
     )
-    val walked   = Shading(World(scene), ShadingMode.Full)
-    val buffered = Shading(World(scene, eyeRays = Long.MaxValue), ShadingMode.Full)
+    val walked = Shading(World(scene), ShadingMode.Full)
+    val world  = World(scene, eyeRays = Long.MaxValue, mirrorRays = Long.MaxValue)
+    // The camera's buffer and its mirror image's in the mirroring floor.
+    assertEquals(world.eyeBuffers.length, 2)
+    val buffered = Shading(world, ShadingMode.Full)
     for i <- 0 until 40; j <- 0 until 30 do
       val d   = Vec3(-0.4 + i * 0.02, -0.35 + j * 0.02, 1).normalised.get
       val ray = Ray(eye, d)
