@@ -249,14 +249,16 @@ final class Bvh(
     hit
 
   /** The index in `shapes` of the shape that the ray meets first among the items `list(from
-    * until to)` of [[bufferItems]] (nondecreasing in `gaps`, each item's box's distance from a
-    * centre, rounded down, that the ray starts no more than `behind` beyond), competing with shape
+    * until to)` (item i: primitive `owner(i)`, and its face `face(i)` when that is a mesh, as in
+    * [[bufferItems]]; nondecreasing in `gaps`, each item's box's distance from a centre, rounded
+    * down, that the ray starts no more than `behind` beyond), competing with shape
     * `best` at `query.distance` (its face in `query.face`, −1 for a shape that is not a mesh):
     * [[nearest]]'s answer among them, the distance and face left in the query. Ties go to the
     * lower index, then the lower face.
     */
   private[render] def nearestAmong(
-      items: BufferItems,
+      owner: Array[Int],
+      face: Array[Int],
       gaps: Array[Float],
       list: Array[Int],
       from: Int,
@@ -279,8 +281,8 @@ final class Bvh(
     var i     = from
     while i < to && gaps(list(i)) <= bestT + behind do
       val item  = list(i)
-      val k     = items.owner(item)
-      val f     = items.face(item)
+      val k     = owner(item)
+      val f     = face(item)
       val shape = prims.index(k)
       if f >= 0 then
         val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)

@@ -22,17 +22,19 @@ package tracer.render
   * @param x      the centre's x
   * @param y      the centre's y
   * @param z      the centre's z
-  * @param cells  the cells, over [[items]]: each cell's items (and the ones tested on every ray)
-  *   in increasing order, so nearest box first
-  * @param items  the items, sorted by [[gaps]]
-  * @param gaps   item i's box's distance from the centre, rounded down: nondecreasing in i
+  * @param cells  the cells, over the items sorted by their distance from the centre: each cell's
+  *   items (and the ones tested on every ray) in increasing order, so nearest box first
+  * @param owner  sorted item i's primitive, in the tree's leaf order ([[BufferItems.owner]])
+  * @param face   sorted item i's face in its mesh's leaf order, or −1 ([[BufferItems.face]])
+  * @param gaps   sorted item i's box's distance from the centre, rounded down: nondecreasing in i
   */
 final class EyeBuffer private (
     val x: Double,
     val y: Double,
     val z: Double,
     private[render] val cells: LightBuffer,
-    private[render] val items: BufferItems,
+    private[render] val owner: Array[Int],
+    private[render] val face: Array[Int],
     private[render] val gaps: Array[Float]
 ):
   /** How far the ray from (ox, oy, oz) in unit direction (dx, dy, dz) starts beyond the centre,
@@ -98,9 +100,10 @@ object EyeBuffer:
       gaps(i) = java.lang.Float.intBitsToFloat((keys(i) >>> 32).toInt)
       i += 1
     val sorted = BufferItems(boxes, owner, face)
+    // The sorted boxes are needed only to bin the items: the buffer keeps their owners and faces.
     LightBuffer
       .build(ex, ey, ez, sorted)
-      .map(cells => new EyeBuffer(ex, ey, ez, cells, sorted, gaps))
+      .map(cells => new EyeBuffer(ex, ey, ez, cells, owner, face, gaps))
 
   /** The distance from (ex, ey, ez) to the box at `at` of `boxes`, as a float no greater than it
     * (0 for a box that holds the point or is not finite: every ray tests it first).

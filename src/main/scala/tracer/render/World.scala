@@ -359,13 +359,15 @@ final class World(
       bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
     else
       val cells  = buffer.cells
-      val items  = buffer.items
+      val owner  = buffer.owner
+      val face   = buffer.face
       val gaps   = buffer.gaps
       val always = cells.always
       query.face = -1
       val first =
         bvh.nearestAmong(
-          items,
+          owner,
+          face,
           gaps,
           always,
           0,
@@ -385,7 +387,8 @@ final class World(
         val from = cells.start(cell)
         val to   = cells.start(cell + 1)
         bvh.nearestAmong(
-          items,
+          owner,
+          face,
           gaps,
           cells.items,
           from,
