@@ -12,6 +12,9 @@ import tracer.testkit.{Images, Processes}
   * launcher would start a nested build, so these tests then stop with a clear message.
   */
 class LauncherSuite extends munit.FunSuite with Images:
+  // A test may train one or two start-up caches (a training run each: 15 s on a fast machine, a
+  // minute on a slow or busy one): munit's default of 30 s is a guard against hangs set too low.
+  override val munitTimeout = scala.concurrent.duration.Duration(3, "min")
 
   private val home     = Path.of("").toAbsolutePath
   private val launcher = home.resolve("tracer")
