@@ -69,6 +69,15 @@ object EyeBuffer:
     */
   val RaysPerItem: Long = 4
 
+  /** The fewest items a buffer is built over: a smaller tree is walked in a few nodes, which a
+    * buffer hardly shortens. At 64, the start-up cache's training scenes of 80 and 201 shapes
+    * built buffers, and a whole run of the gallery's showcase (six shapes, no buffer) was 11%
+    * slower, as it was not with no buffers anywhere: the walk's profiles that the JIT starts from
+    * then lacked those scenes' primary rays, we take it. At 256 it is as fast as without buffers
+    * (docs/performance.md, round 20).
+    */
+  val MinItems: Long = 256
+
   /** The square of the largest distance of a ray's line from the centre, relative to the ray's
     * start's distance, that [[EyeBuffer.behind]] accepts: (10⁻⁹)².
     */

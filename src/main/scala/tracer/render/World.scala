@@ -138,9 +138,10 @@ final class World(
   // Perf: rays from the camera, and those a mirroring plane reflects from it, look up their cell
   // of a buffer around the camera (or its mirror image) and test a few items, nearest first,
   // instead of walking the tree (docs/performance.md, round 20); only where the walk is more than
-  // a node and the render long enough to pay for the buffer. Their items are all the tree's (the
-  // point lights' when those are the same).
-  private def worth(rays: Long)     = bvh.deep && rays >= EyeBuffer.RaysPerItem * bvh.itemCount
+  // a node, the items many, and the render long enough to pay for the buffer. Their items are all
+  // the tree's (the point lights' when those are the same).
+  private def worth(rays: Long) =
+    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems && rays >= EyeBuffer.RaysPerItem * bvh.itemCount
   private val centres: IArray[Vec3] =
     val eye    = scene.camera.location
     val images = if worth(mirrorRays) then World.mirrorImages(eye, objects) else IArray.empty[Vec3]
@@ -310,7 +311,9 @@ final class World(
     // step is a method of its own, so this one is small and has no loop: the JIT compiles it
     // once, quickly (docs/performance.md, round 9).
     val best   = nearestUnbounded(ox, oy, oz, dx, dy, dz, limit, query)
-    val winner = nearestBounded(ox, oy, oz, dx, dy, dz, best, query)
+    val winner =
+      if eyes.isEmpty then bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+      else nearestBounded(ox, oy, oz, dx, dy, dz, best, query)
     if winner == Int.MaxValue then
       query.distance = Double.PositiveInfinity
       -1
