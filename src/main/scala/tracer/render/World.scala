@@ -138,10 +138,12 @@ final class World(
   // Perf: rays from the camera, and those a mirroring plane reflects from it, look up their cell
   // of a buffer around the camera (or its mirror image) and test a few items, nearest first,
   // instead of walking the tree (docs/performance.md, round 20); only where the walk is more than
-  // a node, the items many, and the render long enough to pay for the buffer. Their items are all
-  // the tree's (the point lights' when those are the same).
+  // a node, the items many, and the render long enough to pay for the buffer (its build and its
+  // code's compilation in the JIT's window). Their items are all the tree's (the point lights'
+  // when those are the same).
   private def worth(rays: Long) =
-    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems && rays >= EyeBuffer.RaysPerItem * bvh.itemCount
+    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems && rays >= EyeBuffer.MinRays &&
+      rays >= EyeBuffer.RaysPerItem * bvh.itemCount
   private val centres: IArray[Vec3] =
     val eye    = scene.camera.location
     val images = if worth(mirrorRays) then World.mirrorImages(eye, objects) else IArray.empty[Vec3]

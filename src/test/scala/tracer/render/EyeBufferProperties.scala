@@ -171,6 +171,9 @@ class EyeBufferProperties extends ScalaCheckSuite:
     assert(buffer.get.cells.cellCount > 1000, buffer.get.cells.cellCount)
     assert(buffer.get.cells.entryCount >= 2 * 30 * 30, buffer.get.cells.entryCount)
     assert(World(scene, eyeRays = 1000).eyeBuffer.isEmpty)
+    // A 1280×720 picture is too short a render to pay for the buffer; a 3840×2160 one is not.
+    assert(World(scene, eyeRays = 1280L * 720).eyeBuffer.isEmpty)
+    assert(World(scene, eyeRays = 3840L * 2160).eyeBuffer.isDefined)
     // A few shapes are walked in a node or two: no buffer.
     val few = Seq(Sphere(Vec3.Zero, 1), Sphere(Vec3(3, 0, 0), 1), Sphere(Vec3(0, 3, 0), 1))
     assert(World(sceneOf(few, Vec3(0, 0, -5)), eyeRays = Long.MaxValue).eyeBuffer.isEmpty)
