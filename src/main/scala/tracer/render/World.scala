@@ -17,12 +17,13 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   shadow rays may meet, each point light gets a [[LightBuffer]] (in a world that lets light
   *   through, over its opaque shapes, unless a clear shape is a mesh)
   * @param eyeRays about how many rays the render will trace from the camera's location (its
-  *   primary rays: pixels times samples); when that is at least [[EyeBuffer.RaysPerItem]] an item
-  *   of the tree, the camera gets an [[EyeBuffer]] that answers them
+  *   primary rays: pixels times samples); when that is at least [[EyeBuffer.MinRays]] and
+  *   [[EyeBuffer.RaysPerItem]] an item of a tree of at least [[EyeBuffer.MinItems]] items, the
+  *   camera gets an [[EyeBuffer]] that answers them
   * @param mirrorRays about how many of the camera's rays the render will reflect off its mirroring
-  *   planes (Whitted's full mode: its primary rays); when that is at least
-  *   [[EyeBuffer.RaysPerItem]] an item of the tree, each plane that mirrors gets an [[EyeBuffer]]
-  *   around the camera's mirror image, which answers the rays it reflects from the camera's
+  *   planes (Whitted's full mode: its primary rays); when that is as many as `eyeRays` needs,
+  *   each plane that mirrors gets an [[EyeBuffer]] around the camera's mirror image, which answers
+  *   the rays it reflects from the camera's
   */
 final class World(
     scene: Scene,
