@@ -69,11 +69,12 @@ object EyeBuffer:
     */
   val RaysPerItem: Long = 4
 
-  /** The fewest rays from a centre a render must trace for its buffer to be built: the buffers
-    * shorten the compiled walk (500 spheres at 1280×720: 900 → 615 ms a frame in steady state) but
-    * their build and their code's compilation fall in the JIT's warm-up, and whole runs of
-    * 921,600 primary rays were slower with them (the 500 spheres: Tracetime median 1075 against
-    * 976 ms), those of 8,294,400 faster (3840×2160 quick mode: 1974 against 2818 ms). The
+  /** The fewest rays from a centre a render must trace for its buffer to be built.
+    *
+    * The buffers shorten the compiled walk (500 spheres at 1280×720: 900 → 615 ms a frame in
+    * steady state), but their build and their code's compilation fall in the JIT's warm-up: whole
+    * runs of 921,600 primary rays were slower with them (the 500 spheres: Tracetime median 1075
+    * against 976 ms), those of 8,294,400 faster (3840×2160 quick mode: 1974 against 2818 ms). The
     * crossover lies between; 4,000,000 takes 4K pictures and antialiased smaller ones
     * (docs/performance.md, round 20).
     */
