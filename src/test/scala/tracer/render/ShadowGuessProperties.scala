@@ -14,22 +14,7 @@ import tracer.testkit.Generators.unitVec
   */
 class ShadowGuessProperties extends ScalaCheckSuite:
 
-  private val small = Gen.choose(-6.0, 6.0)
-  private val point = for x <- small; y <- small; z <- small yield Vec3(x, y, z)
-
-  /** A bumpy grid of squares (two faces each) at height about y, n × n squares. */
-  private def terrain(n: Int, y: Double, bump: Double): Mesh =
-    val vertices =
-      IArray.from(for
-        i <- 0 to n; j <- 0 to n
-        c <- List(-4 + 8.0 * i / n, y + bump * Math.sin(i * 1.7 + j * 0.9), -4 + 8.0 * j / n)
-      yield c)
-    def at(i: Int, j: Int) = i * (n + 1) + j
-    val corners            = IArray.from(for
-      i <- 0 until n; j <- 0 until n
-      c <- List(at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1))
-    yield c)
-    Mesh(vertices, corners)
+  import BufferWorlds.{point, small, terrain}
 
   private val shape: Gen[Shape] = Gen.frequency(
     4 -> (for c <- point; r <- Gen.choose(0.1, 1.5) yield Sphere(c, r)),
