@@ -38,7 +38,7 @@ class LightBufferProperties extends ScalaCheckSuite:
   // buffers hold the opaque shapes alone).
   private val world: Gen[World] =
     for
-      n      <- Gen.choose(2, 60)
+      n      <- Gen.choose(1, 60)
       shapes <- Gen.listOfN(n, shape)
       lights <- Gen.listOfN(2, light)
       clear <- Gen.oneOf(Gen.const(Set.empty[Int]), Gen.containerOf[Set, Int](Gen.choose(0, n - 1)))
@@ -89,6 +89,28 @@ class LightBufferProperties extends ScalaCheckSuite:
     assert(buffer.isDefined)
     assert(buffer.get.cellCount > 1000, buffer.get.cellCount)
     assert(buffer.get.entryCount >= 2 * 30 * 30, buffer.get.entryCount)
+
+  test("a world of a few shapes in one leaf gets a buffer too, answering as the walk"):
+    val few =
+      Seq(Sphere(Vec3(0, 1, 0), 1), Sphere(Vec3(2, 0.5, 1), 0.5), Sphere(Vec3(-2, 0.4, 2), 0.4))
+    val w = worldOf(few, Seq(Vec3(-5, 8, -6)))
+    assert(w.lightBuffer(0).isDefined)
+    val query   = w.newQuery()
+    val answers =
+      for x <- -30 to 30; z <- -30 to 30 yield
+        val p      = Vec3(x / 10.0, 0, z / 10.0)
+        val t      = w.lights(0).location - p
+        val d      = t / t.length
+        val buffer = w.lightBuffer(0).get
+        val walk   = walked(w, p, d, t.length, query)
+        assertEquals(
+          w.occludedToward(buffer, p.x, p.y, p.z, d.x, d.y, d.z, t.length, query),
+          walk,
+          s"from $p"
+        )
+        walk
+    // The floor is both in shadow and in light there: both answers were checked.
+    assert(answers.contains(true) && answers.contains(false))
 
   test("no buffer for a short render, a clear mesh, or an area light; one for glass"):
     val shapes = Seq(terrain(30, 0, 0.5), Sphere(Vec3(0, 2, 0), 1))
