@@ -22,6 +22,9 @@ private[io] object ElementRules:
   /** Numbers in [0, 1]. */
   val ZeroToOne: Range = Range(v => v >= 0 && v <= 1, "from 0 to 1")
 
+  /** Numbers > 0. */
+  val AboveZero: Range = Range(_ > 0, "greater than 0")
+
   /** Numbers in (0, 1]. */
   val AboveZeroToOne: Range = Range(v => v > 0 && v <= 1, "greater than 0 and at most 1")
 

@@ -49,8 +49,44 @@ private[io] enum Smooth:
 private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceReader):
   import ElementRules.*
 
-  /** A `<sphere>`. */
+  /** A `<sphere>`.
+    *
+    * Perf: the usual element (at the top of the scene, a radius alone, no text, a `<centre>`
+    * followed by at most a `<pole>`, an `<equator>` and a `<surface>`, in that order, each value
+    * as the rules want it) is read without the general rules' chain of checks; anything else goes
+    * through [[sphereChecked]], which gives the same piece or the same error. The 500 spheres'
+    * scene spent a quarter of a second reading them, cold (`ElementRulesProperties`;
+    * docs/performance.md, round 21).
+    */
   def sphere(e: Element, at: Enclosure): Result[Piece] =
+    e.children match
+      case c :: rest
+          if at.parent.isEmpty && e.strayText.isEmpty && e.attributes.size == 1 &&
+            (c.name == "centre" || c.name == "center") =>
+        val (pole, afterPole)       = ShapeReader.next(rest, "pole")
+        val (equator, afterEquator) = ShapeReader.next(afterPole, "equator")
+        val (_, end)                = ShapeReader.next(afterEquator, "surface")
+        val radius = e.attributes.get("radius").fold(Double.NaN)(r => Decimal.parse(r.trim))
+        val sphere =
+          for
+            centre  <- vector(c).toOption
+            pole    <- pole.fold(Some(Vec3.UnitY))(nonZero)
+            equator <- equator.fold(Some(Vec3.UnitZ))(nonZero)
+            if end.isEmpty && radius > 0 && radius.isFinite &&
+              Math.abs(pole.normalisedOr(Vec3.UnitY).dot(equator.normalisedOr(Vec3.UnitZ))) <=
+              Sphere.RightAngleTolerance
+          yield Sphere(centre, radius, pole, equator)
+        sphere.fold(sphereChecked(e, at))(
+          finish(e, e.children, at, _, texturable = true, solid = true)
+        )
+      case _ => sphereChecked(e, at)
+
+  /** A vector element's value when it is one and not the zero vector. */
+  private def nonZero(e: Element): Option[Vec3] =
+    vector(e).toOption.filter(_.normalised.isDefined)
+
+  /** [[sphere]] by the general rules, each failing with its own error. */
+  def sphereChecked(e: Element, at: Enclosure): Result[Piece] =
     for
       children <- contents(
         e,
@@ -326,3 +362,11 @@ private[io] final class ShapeReader(sources: SceneSources, surfaces: SurfaceRead
     yield
       val shown = surface.orElse(at.surface).getOrElse(Surface())
       Piece(placed(shape, own), Vector(shown), shown)
+
+/** What [[ShapeReader]]'s direct paths share. */
+private[io] object ShapeReader:
+  /** The first of `children` and the rest when it is named `name`; else nothing, and them all. */
+  def next(children: List[Element], name: String): (Option[Element], List[Element]) =
+    children match
+      case c :: rest if c.name == name => (Some(c), rest)
+      case _                           => (None, children)

@@ -55,7 +55,63 @@ private[io] final class SurfaceReader(
     a.name == b.name && a.attributes == b.attributes && a.strayText.map(_.text) ==
       b.strayText.map(_.text) && a.children.corresponds(b.children)(sameContent)
 
-  private def surface(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
+  /** A `<surface>`: the usual one read directly ([[usual]]), anything else by the general rules
+    * ([[surfaceChecked]]), which give the same surface or the error.
+    */
+  def surface(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
+    usual(e, place).fold(surfaceChecked(owner, e, place))(Right(_))
+
+  /** [[surfaceChecked]]'s surface for the usual `<surface>`: no text, numbers within their
+    * ranges (`ior` only where it is allowed), and no child but a `<colour>`; `None` for anything
+    * else.
+    *
+    * Perf: the general rules' chain of eight attribute checks and four child searches ran cold
+    * for every surface of a scene whose surfaces differ (the 500 spheres'; docs/performance.md,
+    * round 21; `ElementRulesProperties` holds the two equal).
+    */
+  private def usual(e: Element, place: SurfacePlace): Option[Surface] =
+    val a = e.attributes
+    // Why: how many of the attributes below were given, to find any other by the count.
+    var present                                                  = 0
+    def read(key: String, default: Double, range: Range): Double =
+      a.get(key) match
+        case None      => default
+        case Some(raw) =>
+          present += 1
+          val v = Decimal.parse(raw.trim)
+          if v.isFinite && range.accepts(v) then v else Double.NaN
+    val values = Array(
+      read("diffuse", 1.0, AtLeastZero),
+      read("reflection", 0.0, ZeroToOne),
+      read("phong", 0.0, AtLeastZero),
+      read("phong-size", Surface.DefaultPhongSize, AboveZero),
+      read("specular", 0.0, AtLeastZero),
+      read("roughness", Surface.DefaultRoughness, AboveZeroToOne),
+      read("transmit", 0.0, ZeroToOne),
+      read("ior", 1.0, AboveZero)
+    )
+    val pigment = e.children match
+      case Nil                                                 => Some(Colour.White)
+      case c :: Nil if c.name == "colour" || c.name == "color" => ElementRules.colour(c, 1).toOption
+      case _                                                   => None
+    val plain = e.strayText.isEmpty && present == a.size && !values.exists(_.isNaN) &&
+      (place.iorRefusal.isEmpty || !a.contains("ior"))
+    for colour <- pigment if plain
+    yield Surface(
+      values(0),
+      values(1),
+      Pigment.Solid(colour),
+      values(2),
+      values(3),
+      values(4),
+      values(5),
+      values(6),
+      values(7),
+      Colour.Black
+    )
+
+  /** [[surface]] by the general rules, each failing with its own error. */
+  def surfaceChecked(owner: Element, e: Element, place: SurfacePlace): Result[Surface] =
     for
       children   <- contents(e, Vocabulary.SurfaceAttributes, Vocabulary.SurfaceChildren)
       diffuse    <- bounded(e, "diffuse", 1.0, AtLeastZero)
