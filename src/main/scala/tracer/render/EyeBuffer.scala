@@ -80,6 +80,17 @@ object EyeBuffer:
     */
   val MinRays: Long = 4000000
 
+  /** Rays from a centre a bounded item must expect for its buffer to pay in a render of fewer
+    * than [[MinRays]] rays: a buffer over few items builds in a moment, and its shorter walks
+    * then outweigh its code's compilation.
+    *
+    * The 500 spheres at 1280×720 (1,843 rays an item) ran faster with their buffers (14
+    * alternating whole runs, wall median 1802 → 1687 ms, Tracetime 1155 → 1024), the
+    * 5,000-triangle mesh at 1280×720 (184 an item) slower (2335 → 2519), the 20,000-triangle one
+    * (46 an item) slower still (docs/performance.md, round 21).
+    */
+  val ShortRenderRaysPerItem: Long = 1000
+
   /** The fewest items a buffer is built over: a smaller tree is walked in a few nodes, which a
     * buffer hardly shortens. At 64, the start-up cache's training scenes of 80 and 201 shapes
     * built buffers, and a whole run of the gallery's showcase (six shapes, no buffer) was 11%

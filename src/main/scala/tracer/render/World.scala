@@ -18,8 +18,9 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   through, over its opaque shapes, unless a clear shape is a mesh)
   * @param eyeRays about how many rays the render will trace from the camera's location (its
   *   primary rays: pixels times samples); when that is at least [[EyeBuffer.MinRays]] and
-  *   [[EyeBuffer.RaysPerItem]] an item of a tree of at least [[EyeBuffer.MinItems]] items, the
-  *   camera gets an [[EyeBuffer]] that answers them
+  *   [[EyeBuffer.RaysPerItem]] an item, or [[EyeBuffer.ShortRenderRaysPerItem]] an item, of a
+  *   tree of at least [[EyeBuffer.MinItems]] items, the camera gets an [[EyeBuffer]] that answers
+  *   them
   * @param mirrorRays about how many of the camera's rays the render will reflect off its mirroring
   *   planes (Whitted's full mode: its primary rays); when that is as many as `eyeRays` needs,
   *   each plane that mirrors gets an [[EyeBuffer]] around the camera's mirror image, which answers
@@ -144,8 +145,9 @@ final class World(
   // code's compilation in the JIT's window). Their items are all the tree's (the point lights'
   // when those are the same).
   private def worth(rays: Long) =
-    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems && rays >= EyeBuffer.MinRays &&
-      rays >= EyeBuffer.RaysPerItem * bvh.itemCount
+    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems &&
+      (rays >= EyeBuffer.MinRays && rays >= EyeBuffer.RaysPerItem * bvh.itemCount ||
+        rays >= EyeBuffer.ShortRenderRaysPerItem * bvh.itemCount)
   private val centres: IArray[Vec3] =
     val eye    = scene.camera.location
     val images = if worth(mirrorRays) then World.mirrorImages(eye, objects) else IArray.empty[Vec3]

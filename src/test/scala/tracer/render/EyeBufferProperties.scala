@@ -174,6 +174,12 @@ class EyeBufferProperties extends ScalaCheckSuite:
     // A 1280×720 picture is too short a render to pay for the buffer; a 3840×2160 one is not.
     assert(World(scene, eyeRays = 1280L * 720).eyeBuffer.isEmpty)
     assert(World(scene, eyeRays = 3840L * 2160).eyeBuffer.isDefined)
+    // But 300 spheres build their buffer in a moment: 1280×720 is 3,072 rays an item, enough;
+    // 640×360 is 768, not.
+    val balls =
+      sceneOf((0 until 300).map(i => Sphere(Vec3(i % 20, i / 20, 5), 0.3)), Vec3(9, 7, -9))
+    assert(World(balls, eyeRays = 1280L * 720).eyeBuffer.isDefined)
+    assert(World(balls, eyeRays = 640L * 360).eyeBuffer.isEmpty)
     // A few shapes are walked in a node or two: no buffer.
     val few = Seq(Sphere(Vec3.Zero, 1), Sphere(Vec3(3, 0, 0), 1), Sphere(Vec3(0, 3, 0), 1))
     assert(World(sceneOf(few, Vec3(0, 0, -5)), eyeRays = Long.MaxValue).eyeBuffer.isEmpty)
