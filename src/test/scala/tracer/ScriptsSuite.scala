@@ -209,6 +209,48 @@ class ScriptsSuite extends MovieWorkspace:
     assertEquals(refused.status, 1)
     assert(refused.err.contains(s"ab.sh: $jar failed"), refused.err)
 
+  workspace.test(
+    "alternate.sh runs each checkout's tracer in turn and prints its times and median"
+  ): d =>
+    val scene = Files.writeString(d.resolve("red.xml"), this.scene(colours(0)))
+    // The project's jar, built by the tracer script if need be (its messages are not ours).
+    assertEquals(run(List(home.resolve("tracer").toString, "--version")).status, 0)
+    val checkout = home.toString
+    val e        = run(
+      List("bash", "scripts/alternate.sh", "--runs", "2", scene.toString, checkout, checkout) ++
+        List("--", "-p", "1", "-x", "9", "-y", "7")
+    )
+    assertEquals(e.status, 0, e.err)
+    // A line a checkout: a wall time (Tracetime) a round, then the median wall time.
+    val line = s"\\Q$checkout\\E: (\\d+)\\(\\d+\\) (\\d+)\\(\\d+\\) median (\\d+)".r
+    val rows = e.out.linesIterator.toList
+    assertEquals(rows.length, 2, e.out)
+    rows.foreach {
+      case line(first, second, median) =>
+        assertEquals(median.toInt, Math.min(first.toInt, second.toInt))
+      case other => fail(s"unexpected line: $other")
+    }
+    // The same checkout draws the same picture: nothing on standard error.
+    assertEquals(e.err, "")
+    assertEquals(run(List("bash", "scripts/alternate.sh", scene.toString)).status, 2)
+    assertEquals(run(List("bash", "scripts/alternate.sh", scene.toString, d.toString)).status, 2)
+    val refused =
+      run(
+        List(
+          "bash",
+          "scripts/alternate.sh",
+          "--runs",
+          "1",
+          scene.toString,
+          checkout,
+          "--",
+          "-x",
+          "0"
+        )
+      )
+    assertEquals(refused.status, 1)
+    assert(refused.err.contains(s"alternate.sh: $checkout failed"), refused.err)
+
   test("movie.sh refuses bad arguments with status 2"):
     assertEquals(run(List(movie.toString)).status, 2)
     assertEquals(run(List(movie.toString, "/no/such/tracer", "frames.txt")).status, 2)
