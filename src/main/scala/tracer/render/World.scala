@@ -72,8 +72,11 @@ final class World(
   // Which shapes show a surface that lets light through.
   private val letThrough: Array[Boolean] = objects.map(_.surfaces.exists(_.transmit > 0))
 
+  /** The shapes that let light through, in index order. */
+  private[render] val clearShapes: Array[Int] = Array.range(0, shapes.length).filter(letThrough(_))
+
   /** True when some surface lets light through, so shadow rays must weigh what they cross. */
-  val transmits: Boolean = letThrough.contains(true)
+  val transmits: Boolean = clearShapes.nonEmpty
 
   /** True when shape `i` shows a surface that lets light through (its `transmit` above 0). */
   def letsThrough(i: Int): Boolean = letThrough(i)
@@ -93,9 +96,6 @@ final class World(
   // plane is then tested by its side, anything else always kept).
   private[render] val boxes: Array[Double] =
     if !beams then Array.emptyDoubleArray else shapes.flatMap(World.widenedBox)
-
-  /** The shapes that let light through, in index order. */
-  private[render] val clearShapes: Array[Int] = shapes.indices.filter(letThrough).toArray
 
   /** True when shadow rays weigh the clear shapes from the crossings each gives along the whole
     * ray, tested once ([[Shadows]]), after an any-hit test of the opaque shapes alone: a world
@@ -119,8 +119,9 @@ final class World(
 
   // The opaque shapes on their own, for the any-hit test of clearWalks: a hierarchy of the bounded
   // ones (sharing the meshes' trees with the whole world's) and the unbounded ones.
-  private val opaqueIndex = shapes.indices.filterNot(letThrough)
-  private val opaqueTree  =
+  private val opaqueIndex =
+    if clearWalks then shapes.indices.filterNot(letThrough) else IndexedSeq.empty[Int]
+  private val opaqueTree =
     Option.when(clearWalks)(Bvh(opaqueIndex.map(shapes), pool, known = bvh.meshTree))
   private val opaqueUnbounded = opaqueTree.fold(Primitives(IndexedSeq.empty, Array.emptyIntArray)) {
     t => Primitives(opaqueIndex.map(shapes), t.unbounded)
