@@ -5,9 +5,10 @@
 #   scripts/alternate.sh [--runs N] SCENE.xml CHECKOUT... [-- TRACER-OPTIONS...]
 #
 # Each round runs every CHECKOUT's own ./tracer (its launcher, its jar, its start-up cache) on
-# SCENE in turn, with -t and TRACER-OPTIONS (e.g. -p 2 -x 1280 -y 720), so that a slow spell of
-# the machine falls on all of them; N rounds (default 5). Prints one line per checkout: the wall
-# time in ms of each round with its Tracetime in brackets, then the median wall time. Each
+# SCENE in turn, from the scene's directory (where its meshes and textures are found), with -t
+# and TRACER-OPTIONS (e.g. -p 2 -x 1280 -y 720), so that a slow spell of the machine falls on
+# all of them; N rounds (default 5). Prints one line per checkout: the wall time in ms of each
+# round with its Tracetime in brackets, then the median wall time. Each
 # checkout renders the scene once at 8x8 first, outside the timings, so its jar is built and its
 # start-up cache trained before the first round. The pictures of the last round are compared;
 # a difference is reported on standard error (the exit status stays 0: a difference may be the
@@ -41,6 +42,12 @@ while [ $# -gt 0 ] && [ "$1" != -- ]; do checkouts+=("$1"); shift; done
 for c in "${checkouts[@]}"; do
   [ -x "$c/tracer" ] || { echo "alternate.sh: '$c' has no ./tracer" >&2; exit 2; }
 done
+# Every run starts in the scene's directory (its meshes and textures are relative to it), so the
+# checkouts are found by their full paths.
+homes=()
+for c in "${checkouts[@]}"; do homes+=("$(cd "$c" && pwd)"); done
+cd "$(dirname "$scene")"
+scene=$PWD/${scene##*/}
 
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -50,7 +57,7 @@ render() {
   local i=$1 checkout=$2 start end trace
   shift 2
   start=$(date +%s%N)
-  if ! trace=$("$checkout/tracer" -t "$@" "$out/$i.png" < "$scene"); then
+  if ! trace=$("${homes[$i]}/tracer" -t "$@" "$out/$i.png" < "$scene"); then
     echo "alternate.sh: $checkout failed" >&2
     exit 1
   fi
@@ -60,7 +67,7 @@ render() {
 }
 
 for i in "${!checkouts[@]}"; do
-  "${checkouts[$i]}/tracer" -x 8 -y 8 "$out/warm-$i.png" < "$scene" > /dev/null ||
+  "${homes[$i]}/tracer" -x 8 -y 8 "$out/warm-$i.png" < "$scene" > /dev/null ||
     { echo "alternate.sh: ${checkouts[$i]} failed" >&2; exit 1; }
 done
 results=()
