@@ -651,8 +651,10 @@ object Shape:
     case s: Sphere =>
       val r = Vec3(s.radius, s.radius, s.radius)
       Some(Bounds(s.centre - r, s.centre + r))
-    case _: Plane    => None
-    case t: Triangle => Some(Bounds.around(Seq(t.t0, t.t1, t.t2)))
+    case _: Plane => None
+    // Perf: the corners' box directly, no list folded box by box: the hierarchy asks every
+    // triangle of a scene once, cold (the 5 MB scene's 20,000; docs/performance.md, round 21).
+    case t: Triangle => Some(Bounds.of(t.t0, t.t1, t.t2))
     case m: Mesh     => Some(m.extent)
     case b: Box      => Some(b.extent)
     case c: Cone => Some(disc(c.base, c.baseRadius, c.axis).union(disc(c.cap, c.capRadius, c.axis)))
