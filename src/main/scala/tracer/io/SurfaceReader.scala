@@ -72,7 +72,8 @@ private[io] final class SurfaceReader(
   private def usual(e: Element, place: SurfacePlace): Option[Surface] =
     val a = e.attributes
     // Why: how many of the attributes below were given, to find any other by the count.
-    var present                                                  = 0
+    var present = 0
+
     def read(key: String, default: Double, range: Range): Double =
       a.get(key) match
         case None      => default

@@ -134,9 +134,9 @@ final class World(
   // Perf: a point light's shadow rays look up their cell of its buffer and test a few items,
   // instead of walking the tree (docs/performance.md, round 19); only where the render is long
   // enough to pay for the buffers, however shallow the tree (a one-leaf tree's rays still tested
-  // its box and its every shape: the few-object scene −13% a 720p frame; round 21). The items are the shapes a shadow
-  // ray asks "blocked?": all of them in a world that lets no light through, the opaque ones (in
-  // their own tree) in one that clearWalks.
+  // its box and its every shape: the few-object scene −13% a 720p frame; round 21). The items are
+  // the shapes a shadow ray asks "blocked?": all of them in a world that lets no light through,
+  // the opaque ones (in their own tree) in one that clearWalks.
   private val shadowTree: Bvh             = if transmits then opaqueTree.getOrElse(bvh) else bvh
   private val shadowUnbounded: Primitives = if transmits then opaqueUnbounded else unbounded
   private val buffered                    = (!transmits || clearWalks) &&
