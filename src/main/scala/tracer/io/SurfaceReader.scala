@@ -81,33 +81,33 @@ private[io] final class SurfaceReader(
           present += 1
           val v = Decimal.parse(raw.trim)
           if v.isFinite && range.accepts(v) then v else Double.NaN
-    val values = Array(
-      read("diffuse", 1.0, AtLeastZero),
-      read("reflection", 0.0, ZeroToOne),
-      read("phong", 0.0, AtLeastZero),
-      read("phong-size", Surface.DefaultPhongSize, AboveZero),
-      read("specular", 0.0, AtLeastZero),
-      read("roughness", Surface.DefaultRoughness, AboveZeroToOne),
-      read("transmit", 0.0, ZeroToOne),
-      read("ior", 1.0, AboveZero)
-    )
-    val pigment = e.children match
+    val diffuse    = read("diffuse", 1.0, AtLeastZero)
+    val reflection = read("reflection", 0.0, ZeroToOne)
+    val phong      = read("phong", 0.0, AtLeastZero)
+    val phongSize  = read("phong-size", Surface.DefaultPhongSize, AboveZero)
+    val specular   = read("specular", 0.0, AtLeastZero)
+    val roughness  = read("roughness", Surface.DefaultRoughness, AboveZeroToOne)
+    val transmit   = read("transmit", 0.0, ZeroToOne)
+    val ior        = read("ior", 1.0, AboveZero)
+    val pigment    = e.children match
       case Nil                                                 => Some(Colour.White)
       case c :: Nil if c.name == "colour" || c.name == "color" => ElementRules.colour(c, 1).toOption
       case _                                                   => None
-    val plain = e.strayText.isEmpty && present == a.size && !values.exists(_.isNaN) &&
+    val numbers = List(diffuse, reflection, phong, phongSize, specular, roughness, transmit, ior)
+    val inRange = !numbers.exists(_.isNaN)
+    val plain   = e.strayText.isEmpty && present == a.size && inRange &&
       (place.iorRefusal.isEmpty || !a.contains("ior"))
     for colour <- pigment if plain
     yield Surface(
-      values(0),
-      values(1),
+      diffuse,
+      reflection,
       Pigment.Solid(colour),
-      values(2),
-      values(3),
-      values(4),
-      values(5),
-      values(6),
-      values(7),
+      phong,
+      phongSize,
+      specular,
+      roughness,
+      transmit,
+      ior,
       Colour.Black
     )
 

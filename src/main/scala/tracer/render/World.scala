@@ -70,11 +70,7 @@ final class World(
     lights.iterator.flatMap(_.area).map(a => a.samplesA * a.samplesB).maxOption.getOrElse(0)
 
   // Which shapes show a surface that lets light through.
-  // Perf: a shape's own surface read as it is, not wrapped in a Vector (SceneObject.surfaces) for
-  // every object of the scene, cold (the 5 MB scene's 20,000; docs/performance.md, round 21).
-  private val letThrough: Array[Boolean] = objects.map(o =>
-    if o.leafSurfaces.isEmpty then o.surface.transmit > 0 else o.leafSurfaces.exists(_.transmit > 0)
-  )
+  private val letThrough: Array[Boolean] = objects.map(_.transmits)
 
   /** The shapes that let light through, in index order. */
   private[render] val clearShapes: Array[Int] = Array.range(0, shapes.length).filter(letThrough(_))

@@ -135,6 +135,14 @@ final case class SceneObject(
   /** Every surface the object shows. */
   def surfaces: Vector[Surface] = if leafSurfaces.isEmpty then Vector(surface) else leafSurfaces
 
+  /** True when some surface the object shows lets light through (its `transmit` above 0).
+    *
+    * Perf: [[surfaces]]' answer without its `Vector`, which `World` made for each of a scene's
+    * objects, cold (the 5 MB scene's 20,000; docs/performance.md, round 21).
+    */
+  def transmits: Boolean =
+    if leafSurfaces.isEmpty then surface.transmit > 0 else leafSurfaces.exists(_.transmit > 0)
+
 /** How a surface reflects and lets through light (scene-format.md; the last six parameters are
   * version 2, each off by default, each rendering as POV-Ray's finish of the same name).
   *

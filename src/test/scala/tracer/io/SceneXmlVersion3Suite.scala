@@ -68,6 +68,14 @@ class SceneXmlVersion3Suite extends SceneDocuments:
     assertEquals(o.surfaceOf(0), Surface(diffuse = 0.9, transmit = 0.5, ior = 1.5))
     assertEquals(o.surfaceOf(1), Surface(diffuse = 0.5))
 
+  test("an object lets light through where a surface it shows does: its own, or its parts'"):
+    val ball = Sphere(Vec3.Zero, 1)
+    assert(!SceneObject(ball).transmits)
+    assert(SceneObject(ball, Surface(transmit = 0.4)).transmits)
+    // A combination shows its parts' surfaces, not its own.
+    assert(SceneObject(ball, Surface(), Vector(Surface(), Surface(transmit = 0.2))).transmits)
+    assert(!SceneObject(ball, Surface(transmit = 0.3), Vector(Surface(), Surface())).transmits)
+
   test(
     "nested combinations inherit from the nearest enclosing surface; none anywhere is the default"
   ):
