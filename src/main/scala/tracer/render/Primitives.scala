@@ -75,20 +75,34 @@ final class Primitives(
   /** The meshes' trees; a mesh primitive's first double is the number of its tree here. */
   private[render] val meshes: Array[MeshTree] =
     val trees = Array.newBuilder[MeshTree]
-    // Perf: a plain loop filling the arrays, once per world.
+    val all   = shapes.toArray
+    // Perf: a plain loop filling the arrays, once per world, its body one call (compiled after a
+    // few hundred turns: a shorter loop than the JIT's on-stack threshold runs interpreted
+    // throughout; BvhBuilder.apply, docs/performance.md, round 22).
     var k = 0
     var m = 0
     while k < order.length do
-      kind(k) = Primitives.store(shapes(order(k)), data, Primitives.Stride * k).ordinal.toByte
-      shapes(order(k)) match
-        case mesh: Mesh =>
-          trees += known(mesh).getOrElse(MeshTree(mesh, pool))
-          owners += mesh
-          data(Primitives.Stride * k) = m
-          m += 1
-        case _ => ()
+      m = lay(all(order(k)), k, m, trees)
       k += 1
     trees.result()
+
+  /** Writes primitive `k`, `shape`, into the arrays; a mesh gets its tree as number `m` in
+    * `trees`. Returns the number of the next mesh's tree.
+    */
+  private def lay(
+      shape: Shape,
+      k: Int,
+      m: Int,
+      trees: scala.collection.mutable.ArrayBuilder[MeshTree]
+  ): Int =
+    kind(k) = Primitives.store(shape, data, Primitives.Stride * k).ordinal.toByte
+    shape match
+      case mesh: Mesh =>
+        trees += known(mesh).getOrElse(MeshTree(mesh, pool))
+        owners += mesh
+        data(Primitives.Stride * k) = m
+        m + 1
+      case _ => m
 
   private val meshOwners = owners.result()
 
