@@ -40,30 +40,26 @@ class TumblerBench:
       .find(s => Shape.bounds(s).exists(b => b.lo.x < -1.5 && b.hi.y > 1))
       .getOrElse(sys.error("no tumbler in scenes/solids.xml"))
     buffer = CrossingBuffer()
-    val box = Shape.bounds(tumbler).get
+    val box = Shape.bounds(tumbler).getOrElse(sys.error("the tumbler has no bounds"))
     // As a render shoots them: from points along rows over and around the tumbler (on the floor
     // behind it, on and in its wall), 16 rays each toward the 4 × 4 sub-lights of the light's
     // square (−4.6..−3.4, 7, −4.6..−3.4), kept when their line meets the tumbler at all.
-    val kept = scala.collection.mutable.ArrayBuffer.empty[Double]
-    var row  = 0
-    while kept.length < 6 * 1024 do
-      var col = 0
-      while col < 64 && kept.length < 6 * 1024 do
-        val fx = box.lo.x - 0.5 + (box.hi.x - box.lo.x + 1) * col / 64
-        val fy = 0.6 * ((row * 7)                                  % 11) / 11.0
-        val fz = box.lo.z - 0.2 + (box.hi.z - box.lo.z + 1) * (row % 16) / 16
-        var k  = 0
-        while k < 16 do
-          val lx = -4.6 + 0.4 * (k / 4) - fx
-          val ly = 7.0 - fy
-          val lz = -4.6 + 0.4 * (k % 4) - fz
-          val l  = Math.sqrt(lx * lx + ly * ly + lz * lz)
-          if Kernel.collect(tumbler, fx, fy, fz, lx / l, ly / l, lz / l, buffer, 0, false) > 0 then
-            kept ++= Seq(fx, fy, fz, lx / l, ly / l, lz / l)
-          k += 1
-        col += 1
-      row += 1
-    rays = kept.toArray
+    val lines =
+      for
+        row <- Iterator.from(0)
+        col <- Iterator.range(0, 64)
+        k   <- Iterator.range(0, 16)
+        fx = box.lo.x - 0.5 + (box.hi.x - box.lo.x + 1) * col / 64
+        fy = 0.6 * ((row * 7)                                  % 11) / 11.0
+        fz = box.lo.z - 0.2 + (box.hi.z - box.lo.z + 1) * (row % 16) / 16
+        lx = -4.6 + 0.4 * (k / 4) - fx
+        ly = 7.0 - fy
+        lz = -4.6 + 0.4 * (k                                   % 4) - fz
+        l  = Math.sqrt(lx * lx + ly * ly + lz * lz)
+        if Kernel.collect(tumbler, fx, fy, fz, lx / l, ly / l, lz / l, buffer, 0, false) > 0
+      yield Array(fx, fy, fz, lx / l, ly / l, lz / l)
+    val kept = lines.take(1024).flatten.toArray
+    rays = kept
     // The same rays in the tumbler's own space: its placement is a translation by
     // (−2.05, 0.002, −0.2) (scenes/solids.xml).
     local = Array.tabulate(rays.length)(i =>
