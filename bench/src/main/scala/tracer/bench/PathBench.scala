@@ -1,10 +1,8 @@
 package tracer.bench
 
-import java.nio.file.{Files, Path}
 import java.util.concurrent.TimeUnit
 import org.openjdk.jmh.annotations.*
 import tracer.image.Raster
-import tracer.io.SceneXml
 import tracer.render.{CameraConfig, Integrator, Renderer, SamplerKind}
 import tracer.scene.Scene
 
@@ -23,13 +21,7 @@ class PathBench:
   var config: CameraConfig = null // nosemgrep: no-null — set by setup() before any benchmark
 
   @Setup def setup(): Unit =
-    // The room from the repository root or from bench/ (where sbt may start the fork).
-    val file = List(Path.of("scenes/cornell.xml"), Path.of("../scenes/cornell.xml"))
-      .find(Files.isRegularFile(_))
-      .getOrElse(Path.of("scenes/cornell.xml"))
-    // Why: a benchmark has no caller to hand an error to; a scene that fails to load must stop
-    // the run loudly rather than time nothing.
-    scene = SceneXml.load(file).fold(why => throw IllegalStateException(why), identity)
+    scene = GalleryScene.load("cornell.xml")
     config = CameraConfig
       .forCamera(scene.camera, 64)
       .withIntegrator(Integrator.Path(16, 0, SamplerKind.Default))

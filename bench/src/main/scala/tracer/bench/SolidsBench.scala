@@ -4,7 +4,6 @@ import java.util.concurrent.TimeUnit
 import org.openjdk.jmh.annotations.*
 import tracer.geometry.{CrossingBuffer, Kernel, Ray, Shape}
 import tracer.render.{CameraConfig, Projection, Query, World}
-import tracer.scene.Scene
 
 /** The general route on the gallery's `scenes/solids.xml` (version 3: CSG, placed solids, a
   * torus, cones): the reference `Shape` functions against the kernel on plain doubles, and the
@@ -19,20 +18,15 @@ import tracer.scene.Scene
 class SolidsBench:
   // Why: JMH state, built by setup() before any measurement: fields JMH can reach, so vars;
   // `index` is the cursor that walks the rays and shapes, one step a call.
-  var world: World            = null // nosemgrep: no-null — set by setup() before any benchmark
-  var query: Query            = null // nosemgrep: no-null — set by setup() before any benchmark
-  var buffer: CrossingBuffer  = null // nosemgrep: no-null — set by setup() before any benchmark
-  var rays: Array[Ray]        = null // nosemgrep: no-null — set by setup() before any benchmark
-  var shapes: Array[Shape]    = null // nosemgrep: no-null — set by setup() before any benchmark
-  var index                   = 0
+  var world: World           = null // nosemgrep: no-null — set by setup() before any benchmark
+  var query: Query           = null // nosemgrep: no-null — set by setup() before any benchmark
+  var buffer: CrossingBuffer = null // nosemgrep: no-null — set by setup() before any benchmark
+  var rays: Array[Ray]       = null // nosemgrep: no-null — set by setup() before any benchmark
+  var shapes: Array[Shape]   = null // nosemgrep: no-null — set by setup() before any benchmark
+  var index                  = 0
 
   @Setup def setup(): Unit =
-    // JMH's fork runs in the bench module's directory; the scene is the gallery's.
-    val file = List("scenes/solids.xml", "../scenes/solids.xml")
-      .map(java.nio.file.Path.of(_).toAbsolutePath)
-      .find(java.nio.file.Files.exists(_))
-      .getOrElse(sys.error("scenes/solids.xml not found"))
-    val scene = tracer.io.SceneXml.load(file, file.getParent).fold(e => sys.error(e), identity): Scene
+    val scene = GalleryScene.load("solids.xml")
     world = World(scene)
     query = world.newQuery()
     buffer = CrossingBuffer()
