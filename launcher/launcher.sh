@@ -237,9 +237,10 @@ tracer_cache_use() {
   fi
 }
 
-# tracer_cache_make KIND JAR FILE TRAINING_DIR...: the training run: renders every training scene
-# small in one process (tracer --batch), the way users' renders run, then writes the cache to
-# FILE. One process at a time makes a given cache (a lock directory beside it; the others go on
+# tracer_cache_make KIND JAR FILE TRAINING_DIR...: the training run: renders the first training
+# scene as one small picture from standard input, then every training scene in one batch
+# (tracer.cli.Training: the two ways users' renders run, in one process), then writes the cache
+# to FILE. One process at a time makes a given cache (a lock directory beside it; the others go on
 # without one); the file appears whole or not at all.
 tracer_cache_make() {
   local kind=$1 jar=$2 file=$3
@@ -265,12 +266,12 @@ tracer_cache_make() {
       # JEP 514: the training run writes the cache when it exits (a second JVM assembles it).
       "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
         -XX:AOTCacheOutput="$work/cache.aot" -Xlog:aot*=off -Xlog:cds=off \
-        -jar "$jar" -x "$tracer_training_width" -p 2 --batch "$work/list" >/dev/null 2>&1 &&
+        -cp "$jar" tracer.cli.Training "$tracer_training_width" "$work/list" >/dev/null 2>&1 &&
         [ -s "$work/cache.aot" ] && mv -f -- "$work/cache.aot" "$file.partial" || status=1
     else
       "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
         -XX:DumpLoadedClassList="$work/classes" \
-        -jar "$jar" -x 64 -p 2 --batch "$work/list" >/dev/null 2>&1 &&
+        -cp "$jar" tracer.cli.Training 64 "$work/list" >/dev/null 2>&1 &&
         "$tracer_java" ${tracer_flags[@]+"${tracer_flags[@]}"} "${tracer_jvm[@]}" \
           -Xshare:dump -XX:SharedClassListFile="$work/classes" \
           -XX:SharedArchiveFile="$file.partial" -Xlog:cds=off -Xlog:cds+dynamic=off \
