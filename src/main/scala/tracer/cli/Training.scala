@@ -25,6 +25,9 @@ object Training:
     * and returns the exit status: [[Main.Success]] when both renders succeed.
     */
   def run(args: Seq[String], out: PrintStream, err: PrintStream): Int =
+    // The jar's main class, which the launcher starts: Scala code calls its module (Main$), so
+    // nothing else here loads it.
+    Class.forName("tracer.cli.Main")
     val cwd = Path.of("").toAbsolutePath
     args match
       case Seq(width, list) =>

@@ -33,8 +33,11 @@ final class Bvh(
   private val wb    = wide.boxes
   private val wc    = wide.child
   private val wn    = wide.count
-  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
-  private val fast: Option[BvhLanes] = Option.when(lanes(wide.size))(BvhLanes(wide, prims))
+  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then:
+  // no function names it, whose class would load it, and the start-up cache keeps neither, since
+  // it needs the Vector API's module; docs/performance.md, round 23).
+  private val fast: Option[BvhLanes] =
+    if lanes(wide.size) then Some(BvhLanes(wide, prims)) else None
 
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
