@@ -27,7 +27,11 @@ import scala.collection.JavaConverters._
   *
   * Only call sites whose functional interface is a Scala function (`scala.FunctionN`,
   * `scala.runtime.function.JProcedureN`, the specialised `scala.runtime.java8.JFunctionN$mc…$sp`)
-  * and that ask for no marker interfaces are rewritten; every other call site stays as it is.
+  * or one of the JDK's that the tracer's code passes function literals to (`java.util.function`'s,
+  * `Callable`, `Runnable`: a thread's scratch buffer, a band of the PNG encoder; round 23), and
+  * that ask for no marker interfaces, are rewritten; every other call site stays as it is. The
+  * bridges such a call site asks for are its instantiated method type, which none of these
+  * interfaces declares, so no caller can reach them.
   */
 object PlainLambdas {
 
@@ -46,7 +50,8 @@ object PlainLambdas {
 
   private val ScalaFunction =
     ("scala/Function[0-9]+|scala/runtime/function/JProcedure[0-9]+|" +
-      "scala/runtime/java8/JFunction[0-9]+\\$mc[A-Za-z]+\\$sp").r
+      "scala/runtime/java8/JFunction[0-9]+\\$mc[A-Za-z]+\\$sp|" +
+      "java/util/function/[A-Za-z]+|java/util/concurrent/Callable|java/lang/Runnable").r
 
   /** Rewrites `jar` in place when it holds such call sites; a jar without any (one already
     * rewritten) is left alone, its time and all, so the launcher's cache stays valid.

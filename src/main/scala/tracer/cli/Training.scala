@@ -9,7 +9,8 @@ import scala.util.{Try, Using}
   * one process, so that the cache holds the classes and method profiles of both.
   *
   * `java -cp tracer.jar tracer.cli.Training WIDTH LIST` renders the first scene of the batch list
-  * LIST as one picture (`tracer -t -p 2 -x 32 OUTPUT < SCENE`, run from the scene's directory),
+  * LIST as one picture (`tracer -t -p 2 -x 32 -g srgb OUTPUT < SCENE`, run from the scene's
+  * directory: the gallery's scenes are made for `-g srgb`),
   * then the whole list as one batch `WIDTH` pixels wide (`tracer -x WIDTH -p 2 --batch LIST`).
   * A batch alone left the one-picture path untrained: its classes were loaded from the jar and
   * its lambdas spun at run time, about 10 ms of a 32×24 render (docs/performance.md, round 23).
@@ -43,7 +44,13 @@ object Training:
             val scene = cwd.resolve(frame.scene)
             val one   = Using(FileInputStream(scene.toFile)) { in =>
               val output = cwd.resolve(frame.output).toString
-              Main.run(Seq("-t", "-p", "2", "-x", "32", output), in, out, err, scene.getParent)
+              Main.run(
+                Seq("-t", "-p", "2", "-x", "32", "-g", "srgb", output),
+                in,
+                out,
+                err,
+                scene.getParent
+              )
             }.fold(
               e =>
                 err.println(s"tracer: ${frame.scene}: ${e.getMessage}")

@@ -35,11 +35,10 @@ final class MeshTree(
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
   private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
-  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then).
+  // The walks with four boxes at a time, when asked for (a class of their own, loaded only then:
+  // no function names it, as in Bvh).
   private val fast: Option[MeshLanes] =
-    Option.when(lanes(wide.size))(
-      MeshLanes(wide, faces, planes, at, vertices)
-    )
+    if lanes(wide.size) then Some(MeshLanes(wide, faces, planes, at, vertices)) else None
 
   /** The number of nodes of the tree, for tests and benchmarks. */
   def nodeCount: Int = wide.size

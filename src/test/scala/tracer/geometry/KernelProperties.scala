@@ -26,8 +26,11 @@ class KernelProperties extends ScalaCheckSuite:
   )
   private val cone =
     for
-      b     <- Gen.oneOf(point, gridPoint)
-      axis  <- Gen.oneOf(unitVec, Gen.oneOf(Vec3.UnitX, Vec3.UnitY, -Vec3.UnitZ))
+      b    <- Gen.oneOf(point, gridPoint)
+      axis <- Gen.oneOf(
+        unitVec,
+        Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3.UnitZ, -Vec3.UnitX, -Vec3.UnitY, -Vec3.UnitZ)
+      )
       h     <- size
       r0    <- Gen.oneOf(Gen.const(0.0), size)
       r1    <- size
