@@ -10,8 +10,8 @@ import scala.util.{Try, Using}
   *
   * `java -cp tracer.jar tracer.cli.Training WIDTH LIST` renders the first scene of the batch list
   * LIST as one picture (`tracer -t -p 2 -x 32 -g srgb OUTPUT < SCENE`, run from the scene's
-  * directory: the gallery's scenes are made for `-g srgb`),
-  * then the whole list as one batch `WIDTH` pixels wide (`tracer -x WIDTH -p 2 --batch LIST`).
+  * directory: the gallery's scenes are made for `-g srgb`), then the whole list as one batch
+  * `WIDTH` pixels wide (`tracer -x WIDTH -p 2 --batch LIST`).
   * A batch alone left the one-picture path untrained: its classes were loaded from the jar and
   * its lambdas spun at run time, about 10 ms of a 32×24 render (docs/performance.md, round 23).
   */
@@ -41,23 +41,16 @@ object Training:
             err.println(s"tracer: $why")
             Main.Failure
           case Right(frame) =>
-            val scene = cwd.resolve(frame.scene)
-            val one   = Using(FileInputStream(scene.toFile)) { in =>
-              val output = cwd.resolve(frame.output).toString
-              Main.run(
-                Seq("-t", "-p", "2", "-x", "32", "-g", "srgb", output),
-                in,
-                out,
-                err,
-                scene.getParent
-              )
-            }.fold(
-              e =>
-                err.println(s"tracer: ${frame.scene}: ${e.getMessage}")
-                Main.Failure
-              ,
-              identity
-            )
+            val scene  = cwd.resolve(frame.scene)
+            val output = cwd.resolve(frame.output).toString
+            val single = Seq("-t", "-p", "2", "-x", "32", "-g", "srgb", output)
+            val one    =
+              Using(FileInputStream(scene.toFile))(Main.run(single, _, out, err, scene.getParent))
+                .recover { e =>
+                  err.println(s"tracer: ${frame.scene}: ${e.getMessage}")
+                  Main.Failure
+                }
+                .getOrElse(Main.Failure)
             val all =
               Main.run(Seq("-x", width, "-p", "2", "--batch", list), System.in, out, err, cwd)
             Math.max(one, all)
