@@ -11,7 +11,8 @@
 #   TRACER_JAVA       the Java to run: a `java` program or the home directory of a JDK or JRE;
 #                     when unset the launcher chooses (tracer_choose_java)
 #   TRACER_JAVA_OPTS  the JVM's options, replacing the default
-#                     "-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1"
+#                     "-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1" (and the default's quick
+#                     end: -Dtracer.exit=halt)
 #   TRACER_CACHE      "off": no start-up cache; "cds": an AppCDS archive even on JDK 25 or newer
 #                     (for comparisons); anything else (or unset): the cache below
 #   TRACER_JDK_DIRS   where installed JDKs are looked for (default "/usr/lib/jvm"), a list
@@ -334,6 +335,10 @@ tracer_launch() {
   # while the render waits in slower code (round 16: the gallery's solids 7% and 1280x720 few 16%
   # sooner, steady state and 4K unchanged). TRACER_JAVA_OPTS replaces them.
   read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1}"
+  # With its own options the JVM halts at the end instead of exiting (tracer.cli.Main.main): an
+  # exit first loads the JDK's logging for one debug message, 15-20 ms of every run. Options of the
+  # user's may start a flight recording or an agent whose shutdown hooks must run: no halt then.
+  if [ -z "${TRACER_JAVA_OPTS+set}" ]; then tracer_jvm+=(-Dtracer.exit=halt); fi
   case "${TRACER_LANES:-off}" in
     off) ;;
     # The walks test four boxes at once with the Vector API (docs/performance.md, round 15); its

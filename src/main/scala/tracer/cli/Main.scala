@@ -22,11 +22,22 @@ object Main:
   /** Exit status of a usage error. */
   val UsageError = 2
 
-  /** Runs the command and exits with its status. */
+  /** Runs the command and exits with its status.
+    *
+    * With `-Dtracer.exit=halt` (the launcher's, when its own JVM options are used) the JVM halts
+    * once both streams are flushed, instead of exiting: from JDK 21 an exit first looks up a
+    * system logger for its debug message, which loads the JDK's logging and looks for its
+    * providers on the class path, 15–20 ms of every run (docs/performance.md, round 23). A halt
+    * skips the shutdown hooks, so it is only for a JVM that has none left to run: the tracer's own
+    * (a partial output's removal) are gone once its files are written, and with
+    * `TRACER_JAVA_OPTS` (a flight recording, an agent) the launcher leaves the property out.
+    */
   def main(args: Array[String]): Unit =
     val status = run(args.toSeq, System.in, System.out, System.err, Path.of("").toAbsolutePath)
     System.out.flush()
-    sys.exit(status)
+    System.err.flush()
+    if sys.props.get("tracer.exit").contains("halt") then Runtime.getRuntime.halt(status)
+    else sys.exit(status)
 
   /** Runs the command on the given streams, with relative paths resolved against `cwd`, and
     * returns the exit status. Every failure is one line on `err`, prefixed `tracer: `.

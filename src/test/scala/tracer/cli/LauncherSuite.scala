@@ -130,11 +130,11 @@ class LauncherSuite extends munit.FunSuite with Images:
     // JDK 23 and newer are told to let Scala's LazyVals use sun.misc.Unsafe without a warning.
     assertEquals(
       chosen(),
-      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -jar $jar --version"
+      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JDK_DIRS" -> Some(d.resolve("none").toString)),
-      s"jdk-19.0.1 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -jar $jar --version"
+      s"jdk-19.0.1 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.toString), "TRACER_JAVA_OPTS" -> Some("-Xmx1g")),
@@ -142,7 +142,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.resolve("bin/java").toString)),
-      s"jdk-11.0.2 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -jar $jar --version"
+      s"jdk-11.0.2 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("a JDK whose path has a newline does not lend its neighbours the wrong home"): d =>
@@ -162,7 +162,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals((e.status, e.err), (0, ""))
     assertEquals(
       e.out.trim,
-      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -jar $jar --version"
+      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
@@ -196,6 +196,19 @@ class LauncherSuite extends munit.FunSuite with Images:
       runIn(d, d.resolve("basics.xml"), List(link.toString, "-x", "16", "o.ppm")).status,
       0
     )
+
+  work.test(
+    "with TRACER_JAVA_OPTS the JVM exits rather than halts: a flight recording is written at exit"
+  ): d =>
+    // A name without the directory: the options are split at spaces, and the directory has one.
+    val recording = d.resolve("r.jfr")
+    val options   = "-Xss8m -XX:StartFlightRecording=filename=r.jfr"
+    val env       = Map("TRACER_JAVA_OPTS" -> Some(options), "TRACER_CACHE" -> Some("off"))
+    val e         =
+      Processes.run(Seq(launcher.toString, "-x", "16", "-i", "basics.xml", "o.png"), d, env)
+    assertEquals(e.status, 0, e.err)
+    assert(Files.isRegularFile(d.resolve("o.png")))
+    assert(Files.size(recording) > 0, s"no recording at $recording")
 
   work.test("-t prints exactly 'Tracetime: N ms' on stdout"): d =>
     val e = tracer(d, d.resolve("basics.xml"), "-t", "-x", "64", "-p", "2", "o.ppm")

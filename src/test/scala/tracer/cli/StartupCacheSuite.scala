@@ -57,6 +57,7 @@ class StartupCacheSuite extends munit.FunSuite:
         "-Xss8m",
         "-XX:+UseSerialGC",
         "-XX:LoopUnrollLimit=1",
+        "-Dtracer.exit=halt",
         s"-Xlog:class+load=info:file=$log",
         "-jar",
         jar.toString
