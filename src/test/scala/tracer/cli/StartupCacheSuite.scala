@@ -35,10 +35,12 @@ class StartupCacheSuite extends munit.FunSuite:
     val version = Processes.run(Seq(home.resolve("tracer").toString, "--version"), scenes)
     val java    = version.out.linesIterator
       .collectFirst { case line if line.contains(" at /") => Path.of(line.split(" at ", 2)(1)) }
-    val cache = Files.list(jar.getParent).iterator.asScala.find { p =>
-      val name = p.getFileName.toString
-      name.startsWith("tracer-java") && name.endsWith(".aot")
-    }
+    val cache = scala.util.Using.resource(Files.list(jar.getParent))(
+      _.iterator.asScala.find { p =>
+        val name = p.getFileName.toString
+        name.startsWith("tracer-java") && name.endsWith(".aot")
+      }
+    )
     assertEquals(first.status, 0, first.err)
     for j <- java; c <- cache yield (j.resolve("bin/java"), c)
 
