@@ -83,6 +83,18 @@ private[io] object XmlSubset:
     private var attrs    = new Array[Map[String, String]](16)
     private var lines    = new Array[Int](16)
     private var children = new Array[List[Element]](16)
+    // The start tag being read: its attributes' names and values, in document order.
+    private var keys   = new Array[String](8)
+    private var values = new Array[String](8)
+    // Perf: names and short values already made, by a hash of their characters; a scene repeats
+    // a few dozen names and many values (colours, grid coordinates), and each repeat is the
+    // same String instead of a new one: the 5 MB scene allocated about 100 MB, one young
+    // collection (docs/performance.md, round 24).
+    // An empty slot holds "", which only the empty text matches, and is that text.
+    private val known = Array.fill(XmlSubset.KnownSlots)("")
+    // Perf: the last line's Some, shared by the elements that start on it.
+    private var lastLine              = 0
+    private var lastSome: Option[Int] = None
 
     /** The whole document: `Some` of the visitor's answer, or `None` outside the subset. */
     def document(): Option[Either[SceneError, Unit]] =
@@ -194,10 +206,10 @@ private[io] object XmlSubset:
     /** A start tag from its `<`: opens the element, or (`/>`) opens and closes it. */
     private def startTag(): Unit =
       i += 1
-      val name       = readName()
-      var attributes = Map.empty[String, String]
-      var more       = true
-      var empty      = false
+      val name  = readName()
+      var count = 0
+      var more  = true
+      var empty = false
       while more do
         val before = i
         space()
@@ -215,12 +227,49 @@ private[io] object XmlSubset:
           expect("=")
           space()
           val value = attributeValue()
-          if attributes.contains(key) then throw Outside
-          attributes = attributes.updated(key, value)
+          if repeated(key, count) then throw Outside
+          if count == keys.length then
+            keys = java.util.Arrays.copyOf(keys, 2 * count)
+            values = java.util.Arrays.copyOf(values, 2 * count)
+          keys(count) = key
+          values(count) = value
+          count += 1
         else throw Outside
+      val attributes = attributeMap(count)
       push(name, attributes, line)
-      if depth == 1 then stop(visitor.root(Element(name, attributes, Nil, None, Some(line))))
+      if depth == 1 then stop(visitor.root(Element(name, attributes, Nil, None, lineSome(line))))
       if empty then pop()
+
+    /** True when `key` is among the tag's first `count` attribute names. */
+    private def repeated(key: String, count: Int): Boolean =
+      var k = 0
+      while k < count && keys(k) != key do k += 1
+      k < count
+
+    /** The tag's `count` attributes as the map a chain of `updated` would make (Perf: the small
+      * maps made once, not one per attribute).
+      */
+    private def attributeMap(count: Int): Map[String, String] = count match
+      case 0 => Map.empty
+      case 1 => Map.Map1(keys(0), values(0))
+      case 2 => Map.Map2(keys(0), values(0), keys(1), values(1))
+      case 3 => Map.Map3(keys(0), values(0), keys(1), values(1), keys(2), values(2))
+      case 4 =>
+        Map.Map4(keys(0), values(0), keys(1), values(1), keys(2), values(2), keys(3), values(3))
+      case _ =>
+        var map = Map.empty[String, String]
+        var k   = 0
+        while k < count do
+          map = map.updated(keys(k), values(k))
+          k += 1
+        map
+
+    /** `Some(n)`, the same one for the elements that start on one line. */
+    private def lineSome(n: Int): Option[Int] =
+      if n != lastLine || lastSome.isEmpty then
+        lastLine = n
+        lastSome = Some(n)
+      lastSome
 
     /** An end tag from its `<`: it must close the innermost open element. */
     private def endTag(): Unit =
@@ -244,9 +293,24 @@ private[io] object XmlSubset:
     private def readName(): String =
       val start = i
       if !(i < end && isNameStart(chars(i))) then throw Outside
+      var hash = chars(i).toInt
       i += 1
-      while i < end && isNameChar(chars(i)) do i += 1
-      String(chars, start, i - start)
+      while i < end && isNameChar(chars(i)) do
+        hash = 31 * hash + chars(i)
+        i += 1
+      shared(start, hash)
+
+    /** The text `chars(start until i)` (whose characters hash to `hash`) as a String: the one
+      * made before for the same characters when the table still holds it.
+      */
+    private def shared(start: Int, hash: Int): String =
+      val slot = (hash ^ (hash >>> 7)) & (XmlSubset.KnownSlots - 1)
+      val seen = known(slot)
+      if sameName(start, seen) then seen
+      else
+        val made = String(chars, start, i - start)
+        known(slot) = made
+        made
 
     /** An attribute's value in quotes, normalised as XML does: each whitespace character (a
       * `\r\n` pair as one) a space, references replaced.
@@ -256,11 +320,17 @@ private[io] object XmlSubset:
       val quote = chars(i)
       i += 1
       val start = i
+      var hash  = 0
       while i < end && chars(i) != quote && chars(i) > ' ' && chars(i) != '<' && chars(i) != '&'
-      do i += 1
-      if at(quote) then
+      do
+        hash = 31 * hash + chars(i)
         i += 1
-        String(chars, start, i - 1 - start)
+      if at(quote) then
+        val value =
+          if i - start <= XmlSubset.KnownLength then shared(start, hash)
+          else String(chars, start, i - start)
+        i += 1
+        value
       else
         // Why: the rare value with whitespace or a reference goes through a builder (first the
         // plain part already scanned).
@@ -345,7 +415,7 @@ private[io] object XmlSubset:
       depth -= 1
       if depth > 0 then
         val element =
-          Element(names(depth), attrs(depth), children(depth).reverse, None, Some(lines(depth)))
+          Element(names(depth), attrs(depth), children(depth).reverse, None, lineSome(lines(depth)))
         if depth == 1 then stop(visitor.child(element))
         else children(depth - 1) = element :: children(depth - 1)
 
@@ -353,6 +423,12 @@ private[io] object XmlSubset:
       result match
         case Left(error) => throw Stopped(error)
         case Right(_)    => ()
+
+  /** Slots of a scan's table of names and values already made (a power of two). */
+  private val KnownSlots = 1024
+
+  /** The longest attribute value looked up in that table: numbers and short words. */
+  private val KnownLength = 24
 
   private def isSpace(c: Char): Boolean = c == ' ' || c == '\n' || c == '\r' || c == '\t'
 
