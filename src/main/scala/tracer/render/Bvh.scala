@@ -18,17 +18,20 @@ import tracer.math.Vec3
   *   ([[BvhLanes]]): the same answers (`BvhProperties`); by default [[LaneSupport.choose]]. Its
   *   meshes choose for themselves.
   * @param known  the trees already built for some of its meshes (another hierarchy's), reused
+  * @param rays   about how many rays the render will trace: a tree (or a mesh's) of many more
+  *   primitives gets coarser leaves ([[BvhBuilder.wholeLeaf]]); by default the finest
   */
 final class Bvh(
     shapes: IndexedSeq[Shape],
     pool: Option[ExecutionContext] = None,
     lanes: Int => Boolean = LaneSupport.choose,
-    known: Mesh => Option[MeshTree] = _ => None
+    known: Mesh => Option[MeshTree] = _ => None,
+    rays: Long = Long.MaxValue
 ):
-  private val tree  = BvhBuilder(shapes).build(pool)
+  private val tree  = BvhBuilder(shapes, rays).build(pool)
   private val boxes = tree.boxes
   private val links = tree.links
-  private val prims = Primitives(shapes, tree.order, pool, known)
+  private val prims = Primitives(shapes, tree.order, pool, known, rays)
   private val wide  = WideTree.collapse(tree)
   private val wb    = wide.boxes
   private val wc    = wide.child

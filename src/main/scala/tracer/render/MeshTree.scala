@@ -20,14 +20,17 @@ import tracer.geometry.Mesh
   * @param lanes whether a tree of so many wide nodes walks with the Vector API's four-box test
   *   ([[MeshLanes]]) instead of one box at a time: the same answers (`MeshProperties`); by
   *   default [[LaneSupport.choose]]
+  * @param rays  about how many rays the render will trace: a mesh of many more faces gets a
+  *   coarser tree ([[BvhBuilder.wholeLeaf]]); by default as many as it takes for the finest
   */
 final class MeshTree(
     mesh: Mesh,
     pool: Option[ExecutionContext] = None,
-    lanes: Int => Boolean = LaneSupport.choose
+    lanes: Int => Boolean = LaneSupport.choose,
+    rays: Long = Long.MaxValue
 ):
   // The binary tree is dropped once collapsed: the queries walk the wide one.
-  private val (wide, faces) = MeshTree.wideTree(mesh, pool)
+  private val (wide, faces) = MeshTree.wideTree(mesh, pool, rays)
   private val wb            = wide.boxes
   private val wc            = wide.child
   private val wn            = wide.count
@@ -373,8 +376,8 @@ private object MeshTree:
     * once it returns (the constructor runs interpreted, and a dead local of its frame would keep
     * them reachable while the leaf-order arrays are made: 238 MB for the 1.3M-face mesh).
     */
-  def wideTree(mesh: Mesh, pool: Option[ExecutionContext]): (WideTree, Array[Int]) =
-    val tree = BvhBuilder.faces(mesh, pool).build(pool)
+  def wideTree(mesh: Mesh, pool: Option[ExecutionContext], rays: Long): (WideTree, Array[Int]) =
+    val tree = BvhBuilder.faces(mesh, pool, rays).build(pool)
     (WideTree.collapse(tree, pool), tree.order)
 
   /** The planes (4 doubles a face, as [[tracer.geometry.Mesh.planes]] holds them) and corner

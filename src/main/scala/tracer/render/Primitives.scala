@@ -55,12 +55,15 @@ object Route:
   * @param pool   where to build the meshes' trees (see [[MeshTree]])
   * @param known  a mesh's tree when one was built already (by another [[Primitives]] of the same
   *   world), so it is not built twice
+  * @param rays   about how many rays the render will trace, for the meshes' trees (see
+  *   [[MeshTree]])
   */
 final class Primitives(
     shapes: IndexedSeq[Shape],
     order: Array[Int],
     pool: Option[ExecutionContext] = None,
-    known: Mesh => Option[MeshTree] = _ => None
+    known: Mesh => Option[MeshTree] = _ => None,
+    rays: Long = Long.MaxValue
 ):
   // Perf: everything a leaf test reads, contiguous per primitive: no Shape object is reached on
   // the fast paths (docs/performance.md, round 4).
@@ -98,7 +101,7 @@ final class Primitives(
     kind(k) = Primitives.store(shape, data, Primitives.Stride * k).ordinal.toByte
     shape match
       case mesh: Mesh =>
-        trees += known(mesh).getOrElse(MeshTree(mesh, pool))
+        trees += known(mesh).getOrElse(MeshTree(mesh, pool, rays = rays))
         owners += mesh
         data(Primitives.Stride * k) = m
         m + 1

@@ -25,18 +25,22 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   planes (Whitted's full mode: its primary rays); when that is as many as `eyeRays` needs,
   *   each plane that mirrors gets an [[EyeBuffer]] around the camera's mirror image, which answers
   *   the rays it reflects from the camera's
+  * @param rays about how many paths the render will trace (its primary rays): trees of many more
+  *   primitives than that get coarser leaves, quicker to build ([[BvhBuilder.wholeLeaf]]); by
+  *   default the finest
   */
 final class World(
     scene: Scene,
     pool: Option[ExecutionContext] = None,
     shadowRays: Long = 0,
     eyeRays: Long = 0,
-    mirrorRays: Long = 0
+    mirrorRays: Long = 0,
+    rays: Long = Long.MaxValue
 ):
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)
-  private val bvh                         = Bvh(shapes.toIndexedSeq, pool)
+  private val bvh                         = Bvh(shapes.toIndexedSeq, pool, rays = rays)
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
 
@@ -122,7 +126,7 @@ final class World(
   private val opaqueIndex =
     if clearWalks then shapes.indices.filterNot(letThrough) else IndexedSeq.empty[Int]
   private val opaqueTree =
-    Option.when(clearWalks)(Bvh(opaqueIndex.map(shapes), pool, known = bvh.meshTree))
+    Option.when(clearWalks)(Bvh(opaqueIndex.map(shapes), pool, known = bvh.meshTree, rays = rays))
   private val opaqueUnbounded = opaqueTree.fold(Primitives(IndexedSeq.empty, Array.emptyIntArray)) {
     t => Primitives(opaqueIndex.map(shapes), t.unbounded)
   }

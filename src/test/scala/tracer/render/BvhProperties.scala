@@ -90,17 +90,24 @@ class BvhProperties extends ScalaCheckSuite:
   private val general: Gen[Shape] =
     Gen.frequency(3 -> box, 3 -> cone, 2 -> torus, 2 -> placed, 3 -> csg, 1 -> meshUnion)
 
-  private def worldOf(shapes: Seq[Shape]): World =
-    World(Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = shapes.map(SceneObject(_))))
+  private def worldOf(shapes: Seq[Shape], rays: Long = Long.MaxValue): World =
+    World(
+      Scene(Camera(Vec3(0, 0, -20), Vec3.Zero), objects = shapes.map(SceneObject(_))),
+      rays = rays
+    )
+
+  // Trees of every coarseness (BvhBuilder.wholeLeaf): the finest, a short render's (leaves up to
+  // about a tenth of the shapes), and the coarsest (leaves up to 64).
+  private def anyTree(shapes: Gen[Seq[Shape]]): Gen[World] =
+    for s <- shapes; rays <- Gen.oneOf(Long.MaxValue, 10L, 1L) yield worldOf(s, rays)
 
   private val world: Gen[World] = Gen.frequency(
-    2 -> Gen.choose(0, 300).flatMap(n => Gen.listOfN(n, shape)).map(worldOf),
+    2 -> anyTree(Gen.choose(0, 300).flatMap(n => Gen.listOfN(n, shape))),
     // Fast and general shapes mixed in one tree, and a general-only tree.
-    2 -> Gen
-      .choose(0, 120)
-      .flatMap(n => Gen.listOfN(n, Gen.frequency(1 -> shape, 1 -> general)))
-      .map(worldOf),
-    1 -> Gen.choose(0, 60).flatMap(n => Gen.listOfN(n, general)).map(worldOf)
+    2 -> anyTree(
+      Gen.choose(0, 120).flatMap(n => Gen.listOfN(n, Gen.frequency(1 -> shape, 1 -> general)))
+    ),
+    1 -> anyTree(Gen.choose(0, 60).flatMap(n => Gen.listOfN(n, general)))
   )
 
   /** Rays from anywhere, and axis-aligned rays from grid points (zero direction components). */
@@ -248,14 +255,34 @@ class BvhProperties extends ScalaCheckSuite:
     assert(bvh.wideNodeCount <= bvh.nodeCount / 2, s"${bvh.wideNodeCount} of ${bvh.nodeCount}")
     assertEquals(w.nearest(Ray(Vec3(5, 5, 5), -Vec3.UnitY), w.newQuery()), 105)
 
+  test("a short render of many shapes builds a coarser tree, with the same answers"):
+    val spheres        = for x <- 0 until 20; z <- 0 until 20 yield Sphere(Vec3(x, 0, z), 0.4)
+    val (fine, coarse) = (Bvh(spheres), Bvh(spheres, rays = 16))
+    assert(coarse.nodeCount * 4 < fine.nodeCount, s"${coarse.nodeCount} of ${fine.nodeCount}")
+    assertEquals(BvhBuilder.wholeLeaf(400, 16), 25)
+    assertEquals(BvhBuilder.wholeLeaf(400, 400), BvhBuilder.MaxLeaf / 2)
+    assertEquals(BvhBuilder.wholeLeaf(1300000, 64), BvhBuilder.CoarseLeaf)
+    assertEquals(BvhBuilder.wholeLeaf(1300000, 0), BvhBuilder.CoarseLeaf)
+    val (q1, q2) = (Query(), Query())
+    for x <- 0 until 20; z <- 0 until 20 do
+      val (ox, oz) = (x + 0.1 * (z % 3), z - 0.05 * (x % 5))
+      assertEquals(
+        coarse.nearest(ox, 5, oz, 0, -1, 0, Double.PositiveInfinity, Int.MaxValue, q1),
+        fine.nearest(ox, 5, oz, 0, -1, 0, Double.PositiveInfinity, Int.MaxValue, q2)
+      )
+      assertEquals(q1.distance, q2.distance)
+
   // The scene's walks with the Vector API (`TRACER_LANES=on`) against its walks one box at a time.
   property("the four-box walks (Lanes) answer as the one-box walks, bit for bit"):
     assume(LaneSupport.available, "the test JVM runs with --add-modules jdk.incubator.vector")
     val shapes =
       Gen.choose(0, 200).flatMap(n => Gen.listOfN(n, Gen.frequency(3 -> shape, 1 -> general)))
-    forAll(shapes, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0)) { (s, rays, limit) =>
-      val (lanes, plain) =
-        (Bvh(s.toIndexedSeq, lanes = _ => true), Bvh(s.toIndexedSeq, lanes = _ => false))
+    val treeRays = Gen.oneOf(Long.MaxValue, 1L)
+    forAll(shapes, Gen.listOfN(50, ray), Gen.choose(0.5, 30.0), treeRays) { (s, rays, limit, n) =>
+      val (lanes, plain) = (
+        Bvh(s.toIndexedSeq, lanes = _ => true, rays = n),
+        Bvh(s.toIndexedSeq, lanes = _ => false, rays = n)
+      )
       val (q1, q2) = (Query(), Query())
       rays.foreach { r =>
         val (o, d) = (r.origin, r.direction)

@@ -88,37 +88,43 @@ class MeshProperties extends ScalaCheckSuite:
   property(
     "nearest: the same face, distance, hit, shading normal and texture as per-face triangles"
   ):
-    forAll(mesh.flatMap(m => rays(m).map((m, _)))) { (m, rs) =>
-      val triangles = m.faces.toVector
-      val meshWorld = World(scene(Vector(before, SceneObject(m), after)))
-      val oldWorld  = World(scene(before +: triangles.map(SceneObject(_)) :+ after))
-      val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
-      rs.foreach { r =>
-        val i = meshWorld.nearest(r, q1)
-        val j = oldWorld.nearest(r, q2)
-        assertEquals(bits(q1.distance), bits(q2.distance), s"$m $r")
-        val expected = if j <= 0 then j else if j > triangles.length then 2 else 1
-        assertEquals(i, expected, s"$m $r")
-        if i == 1 then
-          assertEquals(q1.face, j - 1, s"the first face at the distance: $m $r")
-          val hit = meshWorld.hitAt(i, r, q1)
-          val old = Shape.hitAt(triangles(j - 1), r, q2.distance)
-          assertEquals(hit, old.copy(leaf = j - 1))
-          assertEquals(Shape.hitAt(m, r, q1.distance), hit, "the reference finds the same face")
-          assertEquals(
-            Shape.shadingNormal(m, hit, r),
-            Shape.shadingNormal(triangles(j - 1), old, r)
-          )
-          assertEquals(
-            Shape.surfaceCoordinates(m, hit.point, hit.leaf),
-            Shape.surfaceCoordinates(triangles(j - 1), old.point)
-          )
-      }
+    // The mesh's tree the finest, or the coarsest a short render builds (BvhBuilder.wholeLeaf).
+    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.oneOf(Long.MaxValue, 1L)) {
+      case ((m, rs), treeRays) =>
+        val triangles = m.faces.toVector
+        val meshWorld = World(scene(Vector(before, SceneObject(m), after)), rays = treeRays)
+        val oldWorld  = World(scene(before +: triangles.map(SceneObject(_)) :+ after))
+        val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
+        rs.foreach { r =>
+          val i = meshWorld.nearest(r, q1)
+          val j = oldWorld.nearest(r, q2)
+          assertEquals(bits(q1.distance), bits(q2.distance), s"$m $r")
+          val expected = if j <= 0 then j else if j > triangles.length then 2 else 1
+          assertEquals(i, expected, s"$m $r")
+          if i == 1 then
+            assertEquals(q1.face, j - 1, s"the first face at the distance: $m $r")
+            val hit = meshWorld.hitAt(i, r, q1)
+            val old = Shape.hitAt(triangles(j - 1), r, q2.distance)
+            assertEquals(hit, old.copy(leaf = j - 1))
+            assertEquals(Shape.hitAt(m, r, q1.distance), hit, "the reference finds the same face")
+            assertEquals(
+              Shape.shadingNormal(m, hit, r),
+              Shape.shadingNormal(triangles(j - 1), old, r)
+            )
+            assertEquals(
+              Shape.surfaceCoordinates(m, hit.point, hit.leaf),
+              Shape.surfaceCoordinates(triangles(j - 1), old.point)
+            )
+        }
     }
 
   property("occluded: the same answer as per-face triangles, at every limit"):
-    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 20.0)) { case ((m, rs), limit) =>
-      val meshWorld = World(scene(Vector(SceneObject(m))))
+    forAll(
+      mesh.flatMap(m => rays(m).map((m, _))),
+      Gen.choose(0.5, 20.0),
+      Gen.oneOf(Long.MaxValue, 1L)
+    ) { case ((m, rs), limit, treeRays) =>
+      val meshWorld = World(scene(Vector(SceneObject(m))), rays = treeRays)
       val oldWorld  = World(scene(m.faces.map(SceneObject(_)).toVector))
       val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
       rs.foreach { r =>
@@ -177,19 +183,24 @@ class MeshProperties extends ScalaCheckSuite:
     val m = Mesh(vertices, corners)
     assert(m.faceCount >= BvhBuilder.ParallelFrom)
     val pool = Executors.newFixedThreadPool(3)
+    // The finest tree, and the coarse one of a short render (BvhBuilder.wholeLeaf).
     try
-      val parallel = BvhBuilder.faces(m).build(Some(ExecutionContext.fromExecutorService(pool)))
-      val serial   = BvhBuilder.faces(m).build(None)
-      assertEquals(parallel.size, serial.size)
-      assert(parallel.order.sameElements(serial.order))
-      assert(parallel.links.sameElements(serial.links))
-      assert(parallel.boxes.sameElements(serial.boxes))
-      val wide   = WideTree.collapse(parallel, Some(ExecutionContext.fromExecutorService(pool)))
-      val narrow = WideTree.collapse(serial)
-      assertEquals(wide.size, narrow.size)
-      assert(wide.boxes.sameElements(narrow.boxes))
-      assert(wide.child.sameElements(narrow.child))
-      assert(wide.count.sameElements(narrow.count))
+      for treeRays <- List(Long.MaxValue, 64L) do
+        val parallel =
+          BvhBuilder
+            .faces(m, rays = treeRays)
+            .build(Some(ExecutionContext.fromExecutorService(pool)))
+        val serial = BvhBuilder.faces(m, rays = treeRays).build(None)
+        assertEquals(parallel.size, serial.size)
+        assert(parallel.order.sameElements(serial.order))
+        assert(parallel.links.sameElements(serial.links))
+        assert(parallel.boxes.sameElements(serial.boxes))
+        val wide   = WideTree.collapse(parallel, Some(ExecutionContext.fromExecutorService(pool)))
+        val narrow = WideTree.collapse(serial)
+        assertEquals(wide.size, narrow.size)
+        assert(wide.boxes.sameElements(narrow.boxes))
+        assert(wide.child.sameElements(narrow.child))
+        assert(wide.count.sameElements(narrow.count))
     finally pool.shutdown()
 
   test("a world whose area lights test shapes by beam builds each mesh's tree once"):
@@ -219,17 +230,20 @@ class MeshProperties extends ScalaCheckSuite:
   // the same face, distance and shadow answer, bit for bit, and the same blocker's node.
   property("the four-box walks (Lanes) answer as the one-box walks, bit for bit"):
     assume(LaneSupport.available, "the test JVM runs with --add-modules jdk.incubator.vector")
-    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 30.0)) { case ((m, rs), l) =>
-      val (lanes, plain) = (MeshTree(m, lanes = _ => true), MeshTree(m, lanes = _ => false))
-      val (q1, q2)       = (Query(), Query())
-      rs.foreach { r =>
-        val (o, d) = (r.origin, r.direction)
-        val t1     = lanes.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q1)
-        val t2     = plain.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q2)
-        assertEquals(bits(t1), bits(t2), s"$m $r")
-        assertEquals(q1.meshFace, q2.meshFace, s"$m $r")
-        val b1 = lanes.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q1)
-        assertEquals(b1, plain.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q2), s"$m $r $l")
-        if b1 then assertEquals(q1.blockerNode, q2.blockerNode, s"$m $r $l")
-      }
+    val treeRays = Gen.oneOf(Long.MaxValue, 1L)
+    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.choose(0.5, 30.0), treeRays) {
+      case ((m, rs), l, n) =>
+        val (lanes, plain) =
+          (MeshTree(m, lanes = _ => true, rays = n), MeshTree(m, lanes = _ => false, rays = n))
+        val (q1, q2) = (Query(), Query())
+        rs.foreach { r =>
+          val (o, d) = (r.origin, r.direction)
+          val t1     = lanes.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q1)
+          val t2     = plain.nearest(o.x, o.y, o.z, d.x, d.y, d.z, Double.PositiveInfinity, q2)
+          assertEquals(bits(t1), bits(t2), s"$m $r")
+          assertEquals(q1.meshFace, q2.meshFace, s"$m $r")
+          val b1 = lanes.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q1)
+          assertEquals(b1, plain.occluded(o.x, o.y, o.z, d.x, d.y, d.z, l, q2), s"$m $r $l")
+          if b1 then assertEquals(q1.blockerNode, q2.blockerNode, s"$m $r $l")
+        }
     }
