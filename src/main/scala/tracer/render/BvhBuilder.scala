@@ -68,12 +68,14 @@ private[render] final class BvhBuilder private (
   private val links = new Array[Int](2 * capacity)
 
   /** Builds the tree, on `pool` when one is given (the render's threads, each node's subtrees as
-    * tasks of their own: [[task]]) and on this thread alone otherwise. Its
-    * arrays may be longer than its nodes (`Tree.size` says how many are used; unused numbers are
-    * never linked).
+    * tasks of their own: [[task]]) and on this thread alone otherwise; a coarse one (leaves of
+    * [[LinearLeaf]] or more) in Morton order instead ([[LinearBuild]]). Its arrays may be longer
+    * than its nodes (`Tree.size` says how many are used; unused numbers are never linked).
     */
   def build(pool: Option[ExecutionContext] = None): Tree =
     if prims.isEmpty then Tree(0, boxes, links, prims, without)
+    else if whole >= LinearLeaf then
+      LinearBuild(boxLo, boxHi, centre, prims, without, whole, boxes, links)
     else
       pool match
         case Some(context) if prims.length >= ParallelFrom =>
@@ -539,6 +541,11 @@ private[render] object BvhBuilder:
 
   /** The largest leaf [[wholeLeaf]] makes for a short render of many primitives. */
   val CoarseLeaf = 64
+
+  /** The smallest leaves that [[BvhBuilder.build]] builds in Morton order ([[LinearBuild]]):
+    * a render of at most an eighth as many rays as primitives.
+    */
+  val LinearLeaf = 8
 
   /** SAH bins per split. */
   val Bins = 16
