@@ -75,7 +75,7 @@ private[render] final class BvhBuilder private (
   def build(pool: Option[ExecutionContext] = None): Tree =
     if prims.isEmpty then Tree(0, boxes, links, prims, without)
     else if whole >= LinearLeaf then
-      LinearBuild(boxLo, boxHi, centre, prims, without, whole, boxes, links)
+      LinearBuild(boxLo, boxHi, centre, prims, without, whole, boxes, links, pool)
     else
       pool match
         case Some(context) if prims.length >= ParallelFrom =>

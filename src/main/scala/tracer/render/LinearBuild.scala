@@ -1,5 +1,8 @@
 package tracer.render
 
+import scala.concurrent.duration.Duration
+import scala.concurrent.{Await, ExecutionContext, Future}
+
 /** A quick build of a coarse [[Tree]] for a short render of many primitives: the primitives in
   * the order of the Morton codes of their centres (a linear BVH, Lauterbach et al. 2009), each
   * node split where its range's codes first differ, down to leaves of at most `whole`
@@ -18,7 +21,9 @@ private[render] object LinearBuild:
 
   /** The tree over the primitives `prims` (their boxes at 3k in `boxLo` and `boxHi`, their
     * centres at 3k in `centre`), its nodes written into `boxes` and `links` (sized for 2n − 1
-    * nodes, as [[BvhBuilder]]'s), its order replacing `prims`' in place.
+    * nodes, as [[BvhBuilder]]'s), its order replacing `prims`' in place; on `pool` when one is
+    * given (the passes over the primitives in parts, the subtrees below [[BvhBuilder.Grain]]
+    * primitives as tasks), to the same tree.
     */
   def apply(
       boxLo: Array[Float],
@@ -28,41 +33,105 @@ private[render] object LinearBuild:
       without: Array[Int],
       whole: Int,
       boxes: Array[Float],
-      links: Array[Int]
+      links: Array[Int],
+      pool: Option[ExecutionContext] = None
   ): Tree =
-    val keys = sortedKeys(centre, prims.length)
-    val made = Nodes(boxLo, boxHi, keys, whole, boxes, links).node(0, 0, prims.length, 0, 1)
+    val n    = prims.length
+    val keys = sortedKeys(centre, n, pool)
+    val tree = Nodes(boxLo, boxHi, keys, whole, boxes, links)
+    val made = pool match
+      case Some(context) if n >= BvhBuilder.ParallelFrom => tree.onPool(n)(using context)
+      case _                                             => tree.node(0, 0, n, 0, 1)
     // The primitives in leaf order: position k of the leaves holds the primitive that was at
     // the low half of its key.
-    val order = new Array[Int](prims.length)
-    var k     = 0 // Why: a plain loop over the positions.
-    while k < order.length do
-      order(k) = prims(keys(k).toInt)
-      k += 1
-    System.arraycopy(order, 0, prims, 0, prims.length)
+    val order = new Array[Int](n)
+    BvhBuilder.inParts(n, pool)((from, to) => ordered(prims, keys, order, from, to))
+    System.arraycopy(order, 0, prims, 0, n)
     Tree(made, boxes, links, prims, without)
 
+  /** Writes positions from until to of the leaf order. */
+  private def ordered(
+      prims: Array[Int],
+      keys: Array[Long],
+      order: Array[Int],
+      from: Int,
+      to: Int
+  ): Unit =
+    var k = from // Why: a plain loop over the positions.
+    while k < to do
+      order(k) = prims(keys(k).toInt)
+      k += 1
+
   /** Each primitive's key, its Morton code above its position, in increasing order. */
-  private def sortedKeys(centre: Array[Double], n: Int): Array[Long] =
-    // Perf: the centres' box and the codes in plain loops over the arrays.
+  private def sortedKeys(
+      centre: Array[Double],
+      n: Int,
+      pool: Option[ExecutionContext]
+  ): Array[Long] =
+    // The centres' box: each part's, then theirs.
+    val parts = (n + BvhBuilder.Part - 1) / BvhBuilder.Part
+    // A part that the work did not come to (one thread does them all as the first) stays empty.
+    val box = Array.tabulate(6 * parts)(j =>
+      if j % 6 < 3 then Double.PositiveInfinity else Double.NegativeInfinity
+    )
+    BvhBuilder.inParts(n, pool)((from, to) =>
+      centreBox(centre, from, to, box, from / BvhBuilder.Part)
+    )
+    // Why: the box of the parts' boxes, widened by each.
+    var lx, ly, lz = Double.PositiveInfinity
+    // Why: as lx.
+    var hx, hy, hz = Double.NegativeInfinity
+    var p          = 0
+    while p < parts do
+      if box(6 * p) <= box(6 * p + 3) then
+        lx = Math.min(lx, box(6 * p)); ly = Math.min(ly, box(6 * p + 1))
+        lz = Math.min(lz, box(6 * p + 2)); hx = Math.max(hx, box(6 * p + 3))
+        hy = Math.max(hy, box(6 * p + 4)); hz = Math.max(hz, box(6 * p + 5))
+      p += 1
+    val keys = new Array[Long](n)
+    val grid = Array(lx, ly, lz, hx, hy, hz)
+    BvhBuilder.inParts(n, pool)((from, to) => codes(centre, grid, keys, from, to))
+    byCode(keys)
+
+  /** Writes the box of the centres from until to at 6p of `box` (lows, then highs). */
+  private def centreBox(
+      centre: Array[Double],
+      from: Int,
+      to: Int,
+      box: Array[Double],
+      p: Int
+  ): Unit =
+    // Perf: the box in locals, widened in a plain loop over the centres.
     // Why: the box of the centres, widened by each.
     var lx, ly, lz = Double.PositiveInfinity
     // Why: as lx.
     var hx, hy, hz = Double.NegativeInfinity
-    var k          = 0
-    while k < n do
+    var k          = from
+    while k < to do
       lx = Math.min(lx, centre(3 * k)); hx = Math.max(hx, centre(3 * k))
       ly = Math.min(ly, centre(3 * k + 1)); hy = Math.max(hy, centre(3 * k + 1))
       lz = Math.min(lz, centre(3 * k + 2)); hz = Math.max(hz, centre(3 * k + 2))
       k += 1
-    val keys = new Array[Long](n)
-    k = 0
-    while k < n do
-      val code = spread(cell(centre(3 * k), lx, hx)) << 2 |
-        spread(cell(centre(3 * k + 1), ly, hy)) << 1 | spread(cell(centre(3 * k + 2), lz, hz))
+    box(6 * p) = lx; box(6 * p + 1) = ly; box(6 * p + 2) = lz
+    box(6 * p + 3) = hx; box(6 * p + 4) = hy; box(6 * p + 5) = hz
+
+  /** Writes the keys of the primitives from until to, their centres placed on the grid over the
+    * box `grid` (lows, then highs).
+    */
+  private def codes(
+      centre: Array[Double],
+      grid: Array[Double],
+      keys: Array[Long],
+      from: Int,
+      to: Int
+  ): Unit =
+    var k = from // Why: a plain loop over the primitives.
+    while k < to do
+      val code = spread(cell(centre(3 * k), grid(0), grid(3))) << 2 |
+        spread(cell(centre(3 * k + 1), grid(1), grid(4))) << 1 |
+        spread(cell(centre(3 * k + 2), grid(2), grid(5)))
       keys(k) = code << 32 | k
       k += 1
-    byCode(keys)
 
   /** `keys` sorted by their codes (bits 32 to 61), those of equal codes in the order given: a
     * radix sort of three passes of ten bits.
@@ -138,12 +207,61 @@ private[render] object LinearBuild:
         links(2 * node) = left; links(2 * node + 1) = 0
         val l = this.node(left, start, mid, depth + 1, free + 2)
         val r = this.node(left + 1, mid, end, depth + 1, free + 2 * (mid - start))
-        var a = 0 // Why: the box's six numbers, the children's lows and highs.
-        while a < 3 do
-          boxes(6 * node + a) = Math.min(boxes(6 * left + a), boxes(6 * left + 6 + a))
-          boxes(6 * node + 3 + a) = Math.max(boxes(6 * left + 3 + a), boxes(6 * left + 9 + a))
-          a += 1
+        union(node, left)
         1 + l + r
+
+    /** [[node]] of the root over all `n` positions, with each subtree of at most
+      * [[BvhBuilder.Grain]] positions built by a task of its own on the pool: the same tree.
+      */
+    def onPool(n: Int)(using ExecutionContext): Int =
+      val tasks = Vector.newBuilder[(Int, Int, Int, Int, Int)]
+      val above = plan(0, 0, n, 0, 1, tasks)
+      val below =
+        Future.traverse(tasks.result())((node, start, end, depth, free) =>
+          Future(this.node(node, start, end, depth, free))
+        )
+      val made = Await.result(below, Duration.Inf).sum
+      close(0, 0, n, 0)
+      above + made
+
+    /** Links the nodes above the tasks (subtrees of more than [[BvhBuilder.Grain]] positions)
+      * as [[node]] does and hands each subtree below to `tasks`; returns the nodes linked.
+      */
+    private def plan(
+        node: Int,
+        start: Int,
+        end: Int,
+        depth: Int,
+        free: Int,
+        tasks: scala.collection.mutable.Builder[(Int, Int, Int, Int, Int), ?]
+    ): Int =
+      if end - start <= BvhBuilder.Grain || depth >= BvhBuilder.MaxDepth then
+        tasks += ((node, start, end, depth, free))
+        0
+      else
+        val mid  = middle(start, end)
+        val left = free
+        links(2 * node) = left; links(2 * node + 1) = 0
+        val l = plan(left, start, mid, depth + 1, free + 2, tasks)
+        val r = plan(left + 1, mid, end, depth + 1, free + 2 * (mid - start), tasks)
+        1 + l + r
+
+    /** The boxes of the nodes [[plan]] linked, once the tasks' subtrees below are built. */
+    private def close(node: Int, start: Int, end: Int, depth: Int): Unit =
+      if end - start > BvhBuilder.Grain && depth < BvhBuilder.MaxDepth then
+        val mid  = middle(start, end)
+        val left = links(2 * node)
+        close(left, start, mid, depth + 1)
+        close(left + 1, mid, end, depth + 1)
+        union(node, left)
+
+    /** Writes the box of inner node `node`: the union of its children's, at `left` and after. */
+    private def union(node: Int, left: Int): Unit =
+      var a = 0 // Why: the box's six numbers, the children's lows and highs.
+      while a < 3 do
+        boxes(6 * node + a) = Math.min(boxes(6 * left + a), boxes(6 * left + 6 + a))
+        boxes(6 * node + 3 + a) = Math.max(boxes(6 * left + 3 + a), boxes(6 * left + 9 + a))
+        a += 1
 
     /** Where positions start until end split: the first whose code has the highest bit in which
       * the range's codes differ, or the middle when they are all the same.
