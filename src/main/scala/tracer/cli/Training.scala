@@ -10,10 +10,12 @@ import scala.util.{Try, Using}
   *
   * `java -cp tracer.jar tracer.cli.Training WIDTH LIST` renders the first scene of the batch list
   * LIST as one picture (`tracer -t -p 2 -x 32 -g srgb OUTPUT < SCENE`, run from the scene's
-  * directory: the gallery's scenes are made for `-g srgb`), then the whole list as one batch
-  * `WIDTH` pixels wide (`tracer -x WIDTH -p 2 --batch LIST`).
-  * A batch alone left the one-picture path untrained: its classes were loaded from the jar and
-  * its lambdas spun at run time, about 10 ms of a 32×24 render (docs/performance.md, round 23).
+  * directory: the gallery's scenes are made for `-g srgb`), then the whole list as one batch 4
+  * pixels wide, where a scene of many primitives gets a coarse tree in Morton order
+  * (render.LinearBuild) as short renders of large scenes do, then as one batch `WIDTH` pixels
+  * wide (`tracer -x WIDTH -p 2 --batch LIST`), whose pictures stay. A batch alone left the one-picture path untrained: its classes
+  * were loaded from the jar and its lambdas spun at run time, about 10 ms of a 32×24 render
+  * (docs/performance.md, round 23).
   */
 object Training:
 
@@ -51,9 +53,11 @@ object Training:
                   Main.Failure
                 }
                 .getOrElse(Main.Failure)
+            val coarse =
+              Main.run(Seq("-x", "4", "-p", "2", "--batch", list), System.in, out, err, cwd)
             val all =
               Main.run(Seq("-x", width, "-p", "2", "--batch", list), System.in, out, err, cwd)
-            Math.max(one, all)
+            Math.max(one, Math.max(coarse, all))
       case _ =>
         err.println("tracer: training takes WIDTH LIST")
         Main.UsageError

@@ -94,3 +94,11 @@ class StartupCacheSuite extends munit.FunSuite:
     assertEquals(uncached("-x", "64", "-p", "2", "-i", "meshes.xml"), Nil)
     assertEquals(uncached("-x", "32", "-p", "2", "-m", "path", "-s", "2", "-i", "cornell.xml"), Nil)
   }
+
+  test(
+    "a short render of many triangles (a coarse tree in Morton order) loads every class from the cache"
+  ) {
+    assumeAotJava()
+    val scene = "../launcher/training/triangles-1000.xml"
+    assertEquals(uncached("-x", "4", "-p", "2", "-i", scene), Nil)
+  }
