@@ -92,9 +92,10 @@ private[io] object XmlSubset:
     // collection (docs/performance.md, round 24).
     // An empty slot holds "", which only the empty text matches, and is that text.
     private val known = Array.fill(XmlSubset.KnownSlots)("")
-    // Perf: the last line's Some, shared by the elements that start on it.
+    // Perf: the last line's Some, shared by the elements that start on it, and its line as an
+    // Int (comparing with the Option's would box).
     private var lastLine              = 0
-    private var lastSome: Option[Int] = None
+    private var lastSome: Option[Int] = Some(0)
 
     /** The whole document: `Some` of the visitor's answer, or `None` outside the subset. */
     def document(): Option[Either[SceneError, Unit]] =
@@ -266,7 +267,7 @@ private[io] object XmlSubset:
 
     /** `Some(n)`, the same one for the elements that start on one line. */
     private def lineSome(n: Int): Option[Int] =
-      if n != lastLine || lastSome.isEmpty then
+      if n != lastLine then
         lastLine = n
         lastSome = Some(n)
       lastSome

@@ -83,10 +83,9 @@ private[render] object LinearBuild:
     var hx, hy, hz = Double.NegativeInfinity
     var p          = 0
     while p < parts do
-      if box(6 * p) <= box(6 * p + 3) then
-        lx = Math.min(lx, box(6 * p)); ly = Math.min(ly, box(6 * p + 1))
-        lz = Math.min(lz, box(6 * p + 2)); hx = Math.max(hx, box(6 * p + 3))
-        hy = Math.max(hy, box(6 * p + 4)); hz = Math.max(hz, box(6 * p + 5))
+      lx = Math.min(lx, box(6 * p)); ly = Math.min(ly, box(6 * p + 1))
+      lz = Math.min(lz, box(6 * p + 2)); hx = Math.max(hx, box(6 * p + 3))
+      hy = Math.max(hy, box(6 * p + 4)); hz = Math.max(hz, box(6 * p + 5))
       p += 1
     val keys = new Array[Long](n)
     val grid = Array(lx, ly, lz, hx, hy, hz)
@@ -215,17 +214,21 @@ private[render] object LinearBuild:
       */
     def onPool(n: Int)(using ExecutionContext): Int =
       val tasks = Vector.newBuilder[(Int, Int, Int, Int, Int)]
-      val above = plan(0, 0, n, 0, 1, tasks)
+      val above = Vector.newBuilder[(Int, Int)]
+      plan(0, 0, n, 0, 1, tasks, above)
       val below =
         Future.traverse(tasks.result())((node, start, end, depth, free) =>
           Future(this.node(node, start, end, depth, free))
         )
       val made = Await.result(below, Duration.Inf).sum
-      close(0, 0, n, 0)
-      above + made
+      // The nodes above the tasks, children before parents: each box from its children's.
+      val linked = above.result()
+      linked.foreach(union.tupled)
+      linked.size + made
 
     /** Links the nodes above the tasks (subtrees of more than [[BvhBuilder.Grain]] positions)
-      * as [[node]] does and hands each subtree below to `tasks`; returns the nodes linked.
+      * as [[node]] does, handing each subtree below to `tasks` and each node linked, with its
+      * left child, to `above`, after its children.
       */
     private def plan(
         node: Int,
@@ -233,27 +236,18 @@ private[render] object LinearBuild:
         end: Int,
         depth: Int,
         free: Int,
-        tasks: scala.collection.mutable.Builder[(Int, Int, Int, Int, Int), ?]
-    ): Int =
+        tasks: scala.collection.mutable.Builder[(Int, Int, Int, Int, Int), ?],
+        above: scala.collection.mutable.Builder[(Int, Int), ?]
+    ): Unit =
       if end - start <= BvhBuilder.Grain || depth >= BvhBuilder.MaxDepth then
         tasks += ((node, start, end, depth, free))
-        0
       else
         val mid  = middle(start, end)
         val left = free
         links(2 * node) = left; links(2 * node + 1) = 0
-        val l = plan(left, start, mid, depth + 1, free + 2, tasks)
-        val r = plan(left + 1, mid, end, depth + 1, free + 2 * (mid - start), tasks)
-        1 + l + r
-
-    /** The boxes of the nodes [[plan]] linked, once the tasks' subtrees below are built. */
-    private def close(node: Int, start: Int, end: Int, depth: Int): Unit =
-      if end - start > BvhBuilder.Grain && depth < BvhBuilder.MaxDepth then
-        val mid  = middle(start, end)
-        val left = links(2 * node)
-        close(left, start, mid, depth + 1)
-        close(left + 1, mid, end, depth + 1)
-        union(node, left)
+        plan(left, start, mid, depth + 1, free + 2, tasks, above)
+        plan(left + 1, mid, end, depth + 1, free + 2 * (mid - start), tasks, above)
+        above += ((node, left))
 
     /** Writes the box of inner node `node`: the union of its children's, at `left` and after. */
     private def union(node: Int, left: Int): Unit =

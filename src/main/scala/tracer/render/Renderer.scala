@@ -119,8 +119,7 @@ object Renderer:
       val eyeRays = config.integrator match
         case Integrator.Whitted(_, n)  => config.columns.toLong * config.rows * n * n
         case settings: Integrator.Path => config.columns.toLong * config.rows * settings.samples
-      val world =
-        World(scene, pool, shadowRays = fullRays, eyeRays, mirrorRays = fullRays, rays = eyeRays)
+      val world = World(scene, pool, shadowRays = fullRays, eyeRays, mirrorRays = fullRays)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

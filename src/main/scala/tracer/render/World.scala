@@ -20,23 +20,22 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   primary rays: pixels times samples); when that is at least [[EyeBuffer.MinRays]] and
   *   [[EyeBuffer.RaysPerItem]] an item, or [[EyeBuffer.ShortRenderRaysPerItem]] an item, of a
   *   tree of at least [[EyeBuffer.MinItems]] items, the camera gets an [[EyeBuffer]] that answers
-  *   them
+  *   them; and trees of many more primitives than that get coarser leaves, quicker to build
+  *   ([[BvhBuilder.wholeLeaf]]); 0 (unknown, the default) for no buffer and the finest trees
   * @param mirrorRays about how many of the camera's rays the render will reflect off its mirroring
   *   planes (Whitted's full mode: its primary rays); when that is as many as `eyeRays` needs,
   *   each plane that mirrors gets an [[EyeBuffer]] around the camera's mirror image, which answers
   *   the rays it reflects from the camera's
-  * @param rays about how many paths the render will trace (its primary rays): trees of many more
-  *   primitives than that get coarser leaves, quicker to build ([[BvhBuilder.wholeLeaf]]); by
-  *   default the finest
   */
 final class World(
     scene: Scene,
     pool: Option[ExecutionContext] = None,
     shadowRays: Long = 0,
     eyeRays: Long = 0,
-    mirrorRays: Long = 0,
-    rays: Long = Long.MaxValue
+    mirrorRays: Long = 0
 ):
+  // The rays the trees are built for: the primary rays when known, else as many as need the finest.
+  private val rays                        = if eyeRays > 0 then eyeRays else Long.MaxValue
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
   private val surfaces: Array[Surface]    = objects.map(_.surface)

@@ -88,43 +88,43 @@ class MeshProperties extends ScalaCheckSuite:
   property(
     "nearest: the same face, distance, hit, shading normal and texture as per-face triangles"
   ):
-    // The mesh's tree the finest, or the coarsest a short render builds (BvhBuilder.wholeLeaf).
-    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.oneOf(Long.MaxValue, 1L)) {
-      case ((m, rs), treeRays) =>
-        val triangles = m.faces.toVector
-        val meshWorld = World(scene(Vector(before, SceneObject(m), after)), rays = treeRays)
-        val oldWorld  = World(scene(before +: triangles.map(SceneObject(_)) :+ after))
-        val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
-        rs.foreach { r =>
-          val i = meshWorld.nearest(r, q1)
-          val j = oldWorld.nearest(r, q2)
-          assertEquals(bits(q1.distance), bits(q2.distance), s"$m $r")
-          val expected = if j <= 0 then j else if j > triangles.length then 2 else 1
-          assertEquals(i, expected, s"$m $r")
-          if i == 1 then
-            assertEquals(q1.face, j - 1, s"the first face at the distance: $m $r")
-            val hit = meshWorld.hitAt(i, r, q1)
-            val old = Shape.hitAt(triangles(j - 1), r, q2.distance)
-            assertEquals(hit, old.copy(leaf = j - 1))
-            assertEquals(Shape.hitAt(m, r, q1.distance), hit, "the reference finds the same face")
-            assertEquals(
-              Shape.shadingNormal(m, hit, r),
-              Shape.shadingNormal(triangles(j - 1), old, r)
-            )
-            assertEquals(
-              Shape.surfaceCoordinates(m, hit.point, hit.leaf),
-              Shape.surfaceCoordinates(triangles(j - 1), old.point)
-            )
-        }
+    // The mesh's tree the finest (primary rays unknown), or the coarsest a short render builds
+    // (BvhBuilder.wholeLeaf).
+    forAll(mesh.flatMap(m => rays(m).map((m, _))), Gen.oneOf(0L, 1L)) { case ((m, rs), treeRays) =>
+      val triangles = m.faces.toVector
+      val meshWorld = World(scene(Vector(before, SceneObject(m), after)), eyeRays = treeRays)
+      val oldWorld  = World(scene(before +: triangles.map(SceneObject(_)) :+ after))
+      val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
+      rs.foreach { r =>
+        val i = meshWorld.nearest(r, q1)
+        val j = oldWorld.nearest(r, q2)
+        assertEquals(bits(q1.distance), bits(q2.distance), s"$m $r")
+        val expected = if j <= 0 then j else if j > triangles.length then 2 else 1
+        assertEquals(i, expected, s"$m $r")
+        if i == 1 then
+          assertEquals(q1.face, j - 1, s"the first face at the distance: $m $r")
+          val hit = meshWorld.hitAt(i, r, q1)
+          val old = Shape.hitAt(triangles(j - 1), r, q2.distance)
+          assertEquals(hit, old.copy(leaf = j - 1))
+          assertEquals(Shape.hitAt(m, r, q1.distance), hit, "the reference finds the same face")
+          assertEquals(
+            Shape.shadingNormal(m, hit, r),
+            Shape.shadingNormal(triangles(j - 1), old, r)
+          )
+          assertEquals(
+            Shape.surfaceCoordinates(m, hit.point, hit.leaf),
+            Shape.surfaceCoordinates(triangles(j - 1), old.point)
+          )
+      }
     }
 
   property("occluded: the same answer as per-face triangles, at every limit"):
     forAll(
       mesh.flatMap(m => rays(m).map((m, _))),
       Gen.choose(0.5, 20.0),
-      Gen.oneOf(Long.MaxValue, 1L)
+      Gen.oneOf(0L, 1L)
     ) { case ((m, rs), limit, treeRays) =>
-      val meshWorld = World(scene(Vector(SceneObject(m))), rays = treeRays)
+      val meshWorld = World(scene(Vector(SceneObject(m))), eyeRays = treeRays)
       val oldWorld  = World(scene(m.faces.map(SceneObject(_)).toVector))
       val (q1, q2)  = (meshWorld.newQuery(), oldWorld.newQuery())
       rs.foreach { r =>
