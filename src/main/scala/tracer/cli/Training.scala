@@ -13,9 +13,9 @@ import scala.util.{Try, Using}
   * directory: the gallery's scenes are made for `-g srgb`), then the whole list as one batch 4
   * pixels wide, where a scene of many primitives gets a coarse tree in Morton order
   * (render.LinearBuild) as short renders of large scenes do, then as one batch `WIDTH` pixels
-  * wide (`tracer -x WIDTH -p 2 --batch LIST`), whose pictures stay. A batch alone left the one-picture path untrained: its classes
-  * were loaded from the jar and its lambdas spun at run time, about 10 ms of a 32×24 render
-  * (docs/performance.md, round 23).
+  * wide (`tracer -x WIDTH -p 2 --batch LIST`), whose pictures stay. A batch alone left the
+  * one-picture path untrained: its classes were loaded from the jar and its lambdas spun at run
+  * time, about 10 ms of a 32×24 render (docs/performance.md, round 23).
   */
 object Training:
 

@@ -536,8 +536,7 @@ private[render] object BvhBuilder:
     * are the same whatever the leaves (`BvhProperties`).
     */
   def wholeLeaf(n: Int, rays: Long): Int =
-    if rays >= n then MaxLeaf / 2
-    else Math.max(MaxLeaf / 2, Math.min(CoarseLeaf.toLong, n / Math.max(1L, rays)).toInt)
+    Math.max(MaxLeaf / 2, Math.min(CoarseLeaf.toLong, n / Math.max(1L, rays)).toInt)
 
   /** The largest leaf [[wholeLeaf]] makes for a short render of many primitives. */
   val CoarseLeaf = 64
