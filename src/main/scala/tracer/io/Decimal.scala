@@ -37,7 +37,8 @@ private[io] object Decimal:
     // Perf: one scan that checks the grammar and gathers the digits; a value of at most 15
     // significant digits with a power of ten up to 22 is computed exactly as one correctly rounded
     // product or quotient of two exact doubles (Clinger's fast path), which is what parseDouble
-    // gives; anything longer goes to parseDouble itself (docs/performance.md, round 4).
+    // gives (docs/performance.md, round 4); up to 18 digits by EiselLemire (round 26); anything
+    // longer, or what EiselLemire cannot decide, goes to parseDouble itself.
     // Mutable scan state, local to this loop.
     var i        = from
     val negative = i < to && at(i) == '-'
@@ -84,11 +85,12 @@ private[io] object Decimal:
     else
       val power = scale + exponent
       val exact =
-        if dropped || mantissa > (1L << 53) then Double.NaN
+        if dropped then Double.NaN
         else if mantissa == 0 then 0.0
+        else if mantissa > (1L << 53) then EiselLemire.toDouble(mantissa, power)
         else if power >= 0 && power <= 22 then mantissa.toDouble * Powers(power)
         else if power < 0 && power >= -22 then mantissa.toDouble / Powers(-power)
-        else Double.NaN
+        else EiselLemire.toDouble(mantissa, power)
       if exact.isNaN then java.lang.Double.parseDouble(slow)
       else if negative then -exact
       else exact

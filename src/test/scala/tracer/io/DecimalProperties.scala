@@ -112,3 +112,61 @@ class DecimalProperties extends ScalaCheckSuite:
         "1..2"
       )
     do assert(!Decimal.matches(bad), bad)
+
+  /** The exact decimal `text` as an integer mantissa and a power of ten, when the mantissa has at
+    * most 18 digits (what the scan gathers).
+    */
+  private def decimal(text: String): Option[(Long, Int)] =
+    val exact = BigDecimal(text).bigDecimal.stripTrailingZeros
+    val m     = exact.unscaledValue
+    Option.when(m.signum > 0 && m.bitLength < 63 && m.toString.length <= 18)(
+      (m.longValue, -exact.scale)
+    )
+
+  /** Decimals of 16 to 18 digits just below, at or just above the midpoint between a double and
+    * the next: the hard cases, where the product's bits below the kept 54 are all ones or zeros.
+    */
+  private val nearHalfway: Gen[(Long, Int)] =
+    for
+      e      <- Gen.choose(-90.0, 90.0)
+      digits <- Gen.choose(16, 18)
+      step   <- Gen.choose(-2, 2)
+    yield
+      val d   = Math.pow(10, e)
+      val mid = BigDecimal(d).bigDecimal
+        .add(BigDecimal(Math.nextUp(d)).bigDecimal)
+        .divide(
+          java.math.BigDecimal.valueOf(2)
+        )
+      val near = mid.round(java.math.MathContext(digits, java.math.RoundingMode.DOWN))
+      val w    = near.unscaledValue.add(java.math.BigInteger.valueOf(step))
+      (w.longValue, -near.scale)
+
+  property("Eisel-Lemire: the double nearest w × 10^q, or NaN (then parseDouble decides)"):
+    val mantissas = Gen.oneOf(
+      Gen.choose(1L, 999999999999999999L),
+      Gen.choose(1000000000000000L, 99999999999999999L), // 16 and 17 digits, as tools write
+      Gen.choose(1L << 53, (1L << 53) + 1000)            // halfway cases among them
+    )
+    val powers = Gen.choose(EiselLemire.MinPower - 3, EiselLemire.MaxPower + 3)
+    // Integers of 54 to 63 bits exactly halfway between two doubles: ties go to the even one.
+    val halfway = for
+      k <- Gen.choose(53, 62)
+      m <- Gen.choose(0L, (1L << 52) - 1)
+    yield ((1L << k) + ((2 * m + 1) << (k - 53)), 0)
+    forAll(Gen.oneOf(Gen.zip(mantissas, powers), nearHalfway, halfway)) { (w, q) =>
+      val fast = EiselLemire.toDouble(w, q)
+      if !fast.isNaN then assertEquals(bits(fast), bits(java.lang.Double.parseDouble(s"${w}e$q")))
+    }
+
+  property("Eisel-Lemire decides the shortest decimals of doubles of ordinary size"):
+    // The shortest decimal of a double reads back as it; the algorithm refuses only halfway
+    // cases, which these almost never are: so nearly all must be decided, and each one right.
+    val ordinary = Gen.choose(-80.0, 80.0).map(e => Math.pow(10, e))
+    forAll(Gen.listOfN(200, ordinary)) { ds =>
+      val read = ds.flatMap(d => decimal(d.toString).map((w, q) => d -> EiselLemire.toDouble(w, q)))
+      val decided = read.filterNot(_._2.isNaN)
+      decided.foreach((d, fast) => assertEquals(bits(fast), bits(d), d.toString))
+      assert(decided.size >= read.size - 2, s"${read.size - decided.size} of ${read.size} refused")
+      assert(read.size > 150, s"only ${read.size} decimals of at most 18 digits")
+    }
