@@ -52,18 +52,20 @@ private[image] object PngWriter:
   /** A band of rows: its filtered bytes (for the stream's checksum) and their deflated form. */
   private final class Band(val filtered: Array[Byte], val deflated: Array[Byte])
 
-  /** The deflate level: 5, where zlib's default is 6.
+  /** The deflate level: 4, where zlib's default is 6.
     *
     * Perf: on a 3840×2160 picture of 500 spheres, level 6 took about 0.4 s more of the whole run
-    * (two threads) for a file 3% smaller; level 4 saved little more for 7–13% larger files
-    * (docs/performance.md, round 11).
+    * (two threads) for a file 3% smaller (docs/performance.md, round 11); level 4 against 5 takes
+    * 600–634 ms to encode it instead of 817–850, about 5% of the whole run, for a file 3% larger
+    * (the gallery's pictures 4–5%; round 26). Level 3 (zlib's greedy search) deflated the 720p
+    * picture no faster than 4, into a file 3% larger again.
     */
-  private val Level = 5
+  private val Level = 4
 
   /** A zlib stream's header for [[Level]] (RFC 1950): deflate with a 32 KiB window (`0x78`), then
     * the level's class in the top two bits (0 for levels 0–1, 1 for 2–5, 2 for 6, 3 for 7–9, as
     * zlib writes it), no preset dictionary, and the check bits that make the pair a multiple of
-    * 31: `0x785e` at level 5.
+    * 31: `0x785e` at level 4.
     */
   private val ZlibHeader: Array[Byte] =
     val levelClass = if Level < 2 then 0 else if Level < 6 then 1 else if Level == 6 then 2 else 3
