@@ -147,7 +147,7 @@ private[image] object PngWriter:
   /** The PNG filter (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth) whose filtered bytes of `row`, taken
     * as signed values, have the smallest sum of magnitudes; the first such filter at a tie.
     */
-  private def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
+  private[image] def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
     // Perf: the five sums in one pass over the row, in five locals, with a table for the
     // magnitudes and the predictor written out: this runs cold, once a picture, where five passes
     // cost 3/4 of a 960×540 picture's encoding (the interpreter pays for every bytecode).
@@ -188,7 +188,8 @@ private[image] object PngWriter:
     else 4
 
   /** The magnitude of each byte taken as a signed value: `Magnitude(v & 0xff) == |v.toByte|`. */
-  private val Magnitude: Array[Int] = Array.tabulate(256)(v => if v < 128 then v else 256 - v)
+  private[image] val Magnitude: Array[Int] =
+    Array.tabulate(256)(v => if v < 128 then v else 256 - v)
 
   /** Writes `row` filtered with PNG filter `filter` (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth) into
     * `out` from `at`.
@@ -246,7 +247,10 @@ private[image] object PngWriter:
       thread.setDaemon(true)
       thread
 
-  private def paeth(a: Int, b: Int, c: Int): Int =
+  /** The Paeth predictor of the PNG specification (§9.4) for the unsigned bytes `a` (left), `b`
+    * (above) and `c` (above left): of a, b and c, the nearest to a + b − c, the first at a tie.
+    */
+  private[image] def paeth(a: Int, b: Int, c: Int): Int =
     val p  = a + b - c
     val pa = Math.abs(p - a)
     val pb = Math.abs(p - b)
