@@ -51,10 +51,10 @@ private[io] object EiselLemire:
   private inline def below(a: Long, b: Long): Boolean = java.lang.Long.compareUnsigned(a, b) < 0
 
   /** The double nearest to `mantissa` × 10^`power` (ties to even), for 0 < `mantissa` < 2⁶³, or NaN
-    * when this algorithm cannot tell it (see [[EiselLemire]]).
+    * when this algorithm cannot tell it (see [[EiselLemire]]) or the mantissa is not positive.
     */
   def toDouble(mantissa: Long, power: Int): Double =
-    if power < MinPower || power > MaxPower then Double.NaN
+    if mantissa <= 0 || power < MinPower || power > MaxPower then Double.NaN
     else
       val zeros = java.lang.Long.numberOfLeadingZeros(mantissa)
       val w     = mantissa << zeros
