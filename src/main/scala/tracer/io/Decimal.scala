@@ -87,9 +87,10 @@ private[io] object Decimal:
       val exact =
         if dropped then Double.NaN
         else if mantissa == 0 then 0.0
-        else if mantissa > (1L << 53) then EiselLemire.toDouble(mantissa, power)
-        else if power >= 0 && power <= 22 then mantissa.toDouble * Powers(power)
-        else if power < 0 && power >= -22 then mantissa.toDouble / Powers(-power)
+        else if mantissa <= (1L << 53) && power >= 0 && power <= 22 then
+          mantissa.toDouble * Powers(power)
+        else if mantissa <= (1L << 53) && power < 0 && power >= -22 then
+          mantissa.toDouble / Powers(-power)
         else EiselLemire.toDouble(mantissa, power)
       if exact.isNaN then java.lang.Double.parseDouble(slow)
       else if negative then -exact

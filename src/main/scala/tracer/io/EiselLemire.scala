@@ -11,7 +11,7 @@ import java.math.BigInteger
   * Perf: the scene files that tools write (Java's `Double.toString`, our own [[SceneWriter]])
   * carry up to 17 significant digits, beyond Clinger's exact fast path in [[Decimal]]; each then
   * went to `parseDouble`, whose exact big-number arithmetic runs cold while a scene is read (500
-  * spheres: about 4,500 such numbers, some 20 ms of the read; docs/performance.md, round 26).
+  * spheres: about 4,500 such numbers, some 15 ms of the read; docs/performance.md, round 26).
   */
 private[io] object EiselLemire:
 
@@ -79,7 +79,7 @@ private[io] object EiselLemire:
       var bits54 = hi >>> (top + 9)
       exponent -= 1 ^ top
       val halfway = lo == 0 && (hi & 0x1ff) == 0 && (bits54 & 3) == 1
-      // Round the 54 bits to 53, half up (the halfway cases were refused just above).
+      // Round the 54 bits to 53, half up (a halfway case is refused below, as are the undecided).
       bits54 += bits54 & 1
       bits54 >>>= 1
       if (bits54 >>> 53) > 0 then
