@@ -225,12 +225,15 @@ final class Bvh(
     for j <- 0 until n do World.widen(boxes, 6 * j)
     BufferItems(boxes, owner, face)
 
-  /** True when one of the items `list(from until to)` of [[bufferItems]] is met by the ray at a
-    * t below `limit`: each with the test the any-hit walk gives it ([[Primitives.blocks]], or
-    * the face's own test for a mesh's face); stops at the first.
+  /** True when one of the items `list(from until to)` of light buffer `buffer` (built over
+    * [[bufferItems]]) is met by the ray at a t below `limit` ([[itemBlocks]]); stops at the
+    * first, and leaves it in `query.blockingItem`. The ray runs toward the buffer's light and
+    * `limit` is its distance from there, so an item whose gap exceeds `limit` lies beyond the
+    * ray's start and is skipped; the others are tested farthest from the light first, as a
+    * shading point's blockers mostly lie near it.
     */
   private[render] def anyBlocks(
-      items: BufferItems,
+      buffer: LightBuffer,
       list: Array[Int],
       from: Int,
       to: Int,
@@ -244,21 +247,38 @@ final class Bvh(
       query: Query
   ): Boolean =
     // Perf: a plain loop over the cell's items, the hot loop of a shadow ray toward a point light
-    // with a buffer (docs/performance.md, round 19).
-    var hit = false
-    var i   = from
-    while i < to && !hit do
-      val item = list(i)
-      val k    = items.owner(item)
-      val f    = items.face(item)
-      hit =
-        if f >= 0 then
-          prims
-            .meshes(prims.data(Primitives.Stride * k).toInt)
-            .faceBlocks(f, limit, ox, oy, oz, dx, dy, dz)
-        else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
-      i += 1
-    hit
+    // with a buffer (docs/performance.md, rounds 19 and 27). The list is in increasing order of
+    // gap: the items beyond the start are its tail.
+    val gaps = buffer.gaps
+    var i    = to - 1
+    while i >= from && gaps(list(i)) > limit do i -= 1
+    while i >= from && !itemBlocks(buffer, list(i), ox, oy, oz, dx, dy, dz, limit, query) do i -= 1
+    if i >= from then query.blockingItem = list(i)
+    i >= from
+
+  /** True when item `item` of light buffer `buffer` is met by the ray at a t below `limit`: with
+    * the test the any-hit walk gives it ([[Primitives.blocks]], or the face's own test for a
+    * mesh's face).
+    */
+  private[render] def itemBlocks(
+      buffer: LightBuffer,
+      item: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    val k = buffer.owner(item)
+    val f = buffer.face(item)
+    if f >= 0 then
+      prims
+        .meshes(prims.data(Primitives.Stride * k).toInt)
+        .faceBlocks(f, limit, ox, oy, oz, dx, dy, dz)
+    else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
 
   /** The index in `shapes` of the shape that the ray meets first among the items `list(from
     * until to)` (item i: primitive `owner(i)`, and its face `face(i)` when that is a mesh, as in
@@ -626,6 +646,12 @@ final class Query:
     */
   // Why: a second result of the any-hit walk, the shadow rays' guess for the next ray.
   private[render] var blocker: Int = -1
+
+  /** The item of a light buffer that the last [[Bvh.anyBlocks]] found blocking the ray; written
+    * only when it finds one.
+    */
+  // Why: as blocker, for a shadow ray answered by a light buffer.
+  private[render] var blockingItem: Int = -1
 
   /** The node of a mesh's tree whose children hold the face the last [[MeshTree.occluded]] walk
     * found blocking the ray; written only when it finds one.

@@ -22,20 +22,14 @@ package tracer.render
   * @param x      the centre's x
   * @param y      the centre's y
   * @param z      the centre's z
-  * @param cells  the cells, over the items sorted by their distance from the centre: each cell's
-  *   items (and the ones tested on every ray) in increasing order, so nearest box first
-  * @param owner  sorted item i's primitive, in the tree's leaf order ([[BufferItems.owner]])
-  * @param face   sorted item i's face in its mesh's leaf order, or −1 ([[BufferItems.face]])
-  * @param gaps   sorted item i's box's distance from the centre, rounded down: nondecreasing in i
+  * @param cells  the cells around the centre, over the items sorted by their distance from it
+  *   (their owners, faces and gaps: [[LightBuffer]]), so nearest box first in each
   */
 final class EyeBuffer private (
     val x: Double,
     val y: Double,
     val z: Double,
-    private[render] val cells: LightBuffer,
-    private[render] val owner: Array[Int],
-    private[render] val face: Array[Int],
-    private[render] val gaps: Array[Float]
+    private[render] val cells: LightBuffer
 ):
   /** How far the ray from (ox, oy, oz) in unit direction (dx, dy, dz) starts beyond the centre,
     * rounded up, when this buffer answers it: 0 for a ray from the centre itself, else the
@@ -107,45 +101,4 @@ object EyeBuffer:
 
   /** The buffer of the centre (ex, ey, ez) over `items`, or None when it has nothing to bin. */
   def build(ex: Double, ey: Double, ez: Double, items: BufferItems): Option[EyeBuffer] =
-    val n = items.size
-    // Perf: as LightBuffer.build, plain loops on flat arrays (run cold, once a picture). Each
-    // item's key: its box's distance from the eye as a float rounded down (a lower bound still),
-    // whose bits order as the distances do, above its number; one sort of longs orders them.
-    val keys = new Array[Long](n)
-    var i    = 0
-    while i < n do
-      val gap = distance(items.boxes, 6 * i, ex, ey, ez)
-      keys(i) = (java.lang.Float.floatToRawIntBits(gap).toLong << 32) | i
-      i += 1
-    java.util.Arrays.sort(keys)
-    val boxes = new Array[Double](6 * n)
-    val owner = new Array[Int](n)
-    val face  = new Array[Int](n)
-    val gaps  = new Array[Float](n)
-    i = 0
-    while i < n do
-      val from = (keys(i) & 0xffffffffL).toInt
-      System.arraycopy(items.boxes, 6 * from, boxes, 6 * i, 6)
-      owner(i) = items.owner(from)
-      face(i) = items.face(from)
-      gaps(i) = java.lang.Float.intBitsToFloat((keys(i) >>> 32).toInt)
-      i += 1
-    val sorted = BufferItems(boxes, owner, face)
-    // The sorted boxes are needed only to bin the items: the buffer keeps their owners and faces.
-    LightBuffer
-      .build(ex, ey, ez, sorted)
-      .map(cells => new EyeBuffer(ex, ey, ez, cells, owner, face, gaps))
-
-  /** The distance from (ex, ey, ez) to the box at `at` of `boxes`, as a float no greater than it
-    * (0 for a box that holds the point or is not finite: every ray tests it first).
-    */
-  private def distance(boxes: Array[Double], at: Int, ex: Double, ey: Double, ez: Double): Float =
-    val gx = Math.max(0.0, Math.max(boxes(at) - ex, ex - boxes(at + 3)))
-    val gy = Math.max(0.0, Math.max(boxes(at + 1) - ey, ey - boxes(at + 4)))
-    val gz = Math.max(0.0, Math.max(boxes(at + 2) - ez, ez - boxes(at + 5)))
-    // The box is widened far beyond these roundings already; the factor keeps the bound a bound.
-    val gap = Math.sqrt(gx * gx + gy * gy + gz * gz) * (1 - 1e-9)
-    if !(gap < Double.PositiveInfinity) then 0f
-    else
-      val f = gap.toFloat
-      if f > gap then Math.nextDown(f) else f
+    LightBuffer.build(ex, ey, ez, items).map(cells => new EyeBuffer(ex, ey, ez, cells))

@@ -3,13 +3,16 @@ package tracer.render
 /** A point light's light buffer (Haines and Greenberg, 1986): the directions around the light as
   * the six faces of a cube, the part of each face that the scene covers cut into cells, and in
   * each cell the items (a bounded shape, or one face of a mesh: [[BufferItems]]) whose boxes
-  * some direction of the cell meets. Immutable after [[LightBuffer.build]].
+  * some direction of the cell meets, nearest the light first. Immutable after
+  * [[LightBuffer.build]].
   *
   * A shadow ray from a point toward the light keeps one direction as seen from the light along
   * its whole length (each of its points lies on the line from the light back through the point),
   * so only the items of that direction's cell can block it: a grid lookup and a few tests of
   * those items in place of a walk down the tree, with the same test of each, so the same answer
-  * (`LightBufferProperties`).
+  * (`LightBufferProperties`). And every point of the ray lies no farther from the light than the
+  * ray's start, so the test of a cell's items stops at the first whose box lies farther
+  * ([[gaps]]): those can only lie behind the shading point.
   *
   * Why exact: an item's cells are those of its box widened by 10⁻⁷ of its size (as the tree's
   * float boxes are rounded outwards), its part of a face widened by [[LightBuffer.Slack]] in the
@@ -18,15 +21,26 @@ package tracer.render
   * about 6·10⁻¹⁶ (r / s + 1) for a ray of length r and a point at distance s from the light; the
   * items nearer the light than a ten-thousandth of the scene's size are tested on every ray, and
   * a ray longer than [[reachLimit]] takes the tree instead, so that error stays far below the
-  * slack.
+  * slack. An item's gap is its widened box's distance from the light less 10⁻⁹ of it, rounded
+  * down to a float, and a ray's points lie within about 10⁻¹⁵ of its length farther from the
+  * light than its start: a gap beyond the length is beyond every point.
+  *
+  * The [[EyeBuffer]] uses the same cells around the camera: a ray from there meets a cell's items
+  * in the order of their gaps.
   *
   * @param windows     per face f, at 4f: the face's covered window's low u and v, and cells per
   *   unit of u and of v
   * @param highs       per face f, at 2f: the window's high u and v
   * @param sizes       per face f, at 3f: its cells along u and along v, and its first cell's number
   * @param start       cell c's items are `items(start(c) until start(c + 1))`
-  * @param items       the cells' items, numbers in the [[BufferItems]]
-  * @param always      the items tested on every ray (those too near the light or too large)
+  * @param items       the cells' items, numbers of the sorted items below, in increasing order in
+  *   each cell (so nearest the centre first)
+  * @param always      the items tested on every ray (those too near the light or too large), in
+  *   increasing order
+  * @param owner       sorted item i's primitive, in the tree's leaf order ([[BufferItems.owner]])
+  * @param face        sorted item i's face in its mesh's leaf order, or −1 ([[BufferItems.face]])
+  * @param gaps        sorted item i's box's distance from the light, rounded down: nondecreasing
+  *   in i (0 for a box that holds the light or is not finite)
   * @param reachLimit  the longest shadow ray the buffer answers
   */
 final class LightBuffer private (
@@ -36,6 +50,9 @@ final class LightBuffer private (
     private[render] val start: Array[Int],
     private[render] val items: Array[Int],
     private[render] val always: Array[Int],
+    private[render] val owner: Array[Int],
+    private[render] val face: Array[Int],
+    private[render] val gaps: Array[Float],
     reachLimit: Double
 ):
   /** The number of cells, for tests and benchmarks. */
@@ -102,22 +119,58 @@ object LightBuffer:
 
   /** The buffer of the light at (lx, ly, lz) over `items`, or None when it has nothing to bin. */
   def build(lx: Double, ly: Double, lz: Double, items: BufferItems): Option[LightBuffer] =
-    val n   = items.size
-    val rel = new Array[Double](6 * n)
+    val n = items.size
     // Perf: the build's loops run once a light, before the render, over up to millions of items,
     // in the JIT's window: plain loops on flat arrays, no closure, range or boxed double per
     // item (a first version with them took 250 ms of a 720p render of mesh-20000; round 19).
-    // The boxes relative to the light, and the scene's size seen from it: the farthest finite
-    // box corner.
-    var extent = 0.0
-    var i      = 0
-    while i < 6 * n do
-      val d = items.boxes(i) - (if i % 3 == 0 then lx else if i % 3 == 1 then ly else lz)
-      rel(i) = d
-      val e = Math.abs(d)
-      if e > extent && e < Double.PositiveInfinity then extent = e
+    // Each item's key: its box's distance from the light as a float rounded down (a lower bound
+    // still), whose bits order as the distances do, above its number; one sort of longs orders
+    // them.
+    val keys = new Array[Long](n)
+    var i    = 0
+    while i < n do
+      val gap = distance(items.boxes, 6 * i, lx, ly, lz)
+      keys(i) = (java.lang.Float.floatToRawIntBits(gap).toLong << 32) | i
       i += 1
-    if !(extent > 0) then None else Some(binned(rel, n, 1e-4 * extent))
+    java.util.Arrays.sort(keys)
+    // Perf: as above. The sorted boxes relative to the light, and the scene's size seen from
+    // it: the farthest finite box corner.
+    val rel    = new Array[Double](6 * n)
+    val owner  = new Array[Int](n)
+    val face   = new Array[Int](n)
+    val gaps   = new Array[Float](n)
+    var extent = 0.0
+    i = 0
+    while i < n do
+      val from = (keys(i) & 0xffffffffL).toInt
+      owner(i) = items.owner(from)
+      face(i) = items.face(from)
+      gaps(i) = java.lang.Float.intBitsToFloat((keys(i) >>> 32).toInt)
+      var j = 0
+      while j < 6 do
+        val d =
+          items.boxes(6 * from + j) - (if j % 3 == 0 then lx else if j % 3 == 1 then ly else lz)
+        rel(6 * i + j) = d
+        val e = Math.abs(d)
+        if e > extent && e < Double.PositiveInfinity then extent = e
+        j += 1
+      i += 1
+    if !(extent > 0) then None
+    else Some(binned(rel, n, 1e-4 * extent, owner, face, gaps))
+
+  /** The distance from (cx, cy, cz) to the box at `at` of `boxes`, as a float no greater than it
+    * (0 for a box that holds the point or is not finite: every ray tests it first).
+    */
+  private def distance(boxes: Array[Double], at: Int, cx: Double, cy: Double, cz: Double): Float =
+    val gx = Math.max(0.0, Math.max(boxes(at) - cx, cx - boxes(at + 3)))
+    val gy = Math.max(0.0, Math.max(boxes(at + 1) - cy, cy - boxes(at + 4)))
+    val gz = Math.max(0.0, Math.max(boxes(at + 2) - cz, cz - boxes(at + 5)))
+    // The box is widened far beyond these roundings already; the factor keeps the bound a bound.
+    val gap = Math.sqrt(gx * gx + gy * gy + gz * gz) * (1 - 1e-9)
+    if !(gap < Double.PositiveInfinity) then 0f
+    else
+      val f = gap.toFloat
+      if f > gap then Math.nextDown(f) else f
 
   /** What [[binned]] knows of an item that does not lie on exactly one face: on none. */
   private val OnNone: Byte = -1
@@ -129,12 +182,15 @@ object LightBuffer:
   private val OnAlways: Byte = -3
 
   /** The buffer of `n` items, boxes `rel` relative to the light, those nearer than `near` (or
-    * without finite bounds) tested on every ray.
+    * without finite bounds) tested on every ray; `owner`, `face` and `gaps` as the buffer's.
     */
   private def binned(
       rel: Array[Double],
       n: Int,
-      near: Double
+      near: Double,
+      owner: Array[Int],
+      face: Array[Int],
+      gaps: Array[Float]
   ): LightBuffer =
     // Each item's face (0 to 5) and its part of it (u0, u1, v0, v1 at 4i) when it lies on one
     // face only, as most do; else OnNone, OnSeveral or OnAlways.
@@ -217,7 +273,7 @@ object LightBuffer:
       i += 1
     // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
     // that length errs by less than a twentieth of the slack.
-    new LightBuffer(windows, highs, sizes, start, items, always, 1e7 * near)
+    new LightBuffer(windows, highs, sizes, start, items, always, owner, face, gaps, 1e7 * near)
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
     * high u and v (from `parts` for an item on one face; found again for one on several).

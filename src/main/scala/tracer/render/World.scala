@@ -225,7 +225,7 @@ final class World(
       do k += 1
       k < shadowUnbounded.size ||
       shadowTree.anyBlocks(
-        items,
+        buffer,
         buffer.always,
         0,
         buffer.always.length,
@@ -239,7 +239,7 @@ final class World(
         query
       ) ||
       cell >= 0 && shadowTree.anyBlocks(
-        items,
+        buffer,
         buffer.items,
         buffer.start(cell),
         buffer.start(cell + 1),
@@ -252,6 +252,23 @@ final class World(
         limit,
         query
       )
+
+  /** True when item `item` of light buffer `buffer` blocks the shadow ray from (ox, oy, oz) in
+    * unit direction (dx, dy, dz) before `limit`: a guess tested before [[occludedToward]], whose
+    * answer it gives when true.
+    */
+  def itemBlocks(
+      buffer: LightBuffer,
+      item: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean = shadowTree.itemBlocks(buffer, item, ox, oy, oz, dx, dy, dz, limit, query)
 
   /** Primitives.distance of unbounded shape `k` of those shadow rays toward a buffered light
     * ask (all of them, or in a world that lets light through, the opaque ones).
@@ -372,9 +389,9 @@ final class World(
       bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
     else
       val cells  = buffer.cells
-      val owner  = buffer.owner
-      val face   = buffer.face
-      val gaps   = buffer.gaps
+      val owner  = cells.owner
+      val face   = cells.face
+      val gaps   = cells.gaps
       val always = cells.always
       query.face = -1
       val first =

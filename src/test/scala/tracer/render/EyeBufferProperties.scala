@@ -187,7 +187,7 @@ class EyeBufferProperties extends ScalaCheckSuite:
   test("a buffer's items are sorted by their boxes' distance from the eye"):
     val shapes = Seq(terrain(12, 0, 0.5), Sphere(Vec3(0, 2, 0), 1), Sphere(Vec3(2, 1, 3), 0.5))
     val buffer = World(sceneOf(shapes, Vec3(1, 4, -7)), eyeRays = Long.MaxValue).eyeBuffer.get
-    val gaps   = buffer.gaps.toSeq
+    val gaps   = buffer.cells.gaps.toSeq
     assertEquals(gaps, gaps.sorted)
     assert(gaps.head >= 0 && gaps.last > 0, gaps)
 

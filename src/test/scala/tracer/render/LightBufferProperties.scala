@@ -151,3 +151,31 @@ class LightBufferProperties extends ScalaCheckSuite:
       val d   = Vec3(-0.4 + i * 0.02, -0.35 + j * 0.02, 1).normalised.get
       val ray = Ray(Vec3(0, 3, -9), d)
       assertEquals(buffered.colour(ray, 5), walked.colour(ray, 5), ray.toString)
+
+  test("a cell's items come nearest the light first, the buffer's gaps nondecreasing"):
+    val w      = worldOf(Seq(terrain(20, 0, 0.5), Sphere(Vec3(0, 2, 0), 1)), Seq(Vec3(1, 8, -2)))
+    val buffer = w.lightBuffer(0).get
+    assertEquals(buffer.gaps.toSeq, buffer.gaps.toSeq.sorted)
+    for c <- 0 until buffer.cellCount do
+      val cell = buffer.items.slice(buffer.start(c), buffer.start(c + 1)).toSeq
+      assertEquals(cell, cell.sorted, s"cell $c")
+    assertEquals(buffer.always.toSeq, buffer.always.toSeq.sorted)
+
+  test("a blocker just above the shading point, its box almost as far from the light, blocks"):
+    // The plate's gap (its top's distance from the light, rounded down to a float) lies within a
+    // float's step of the shadow ray's length: the test of the cell's items must still reach it.
+    val plates = (0 until 300).map { i =>
+      val x = (i % 20) * 3.0
+      val z = (i / 20) * 3.0
+      Box(Vec3(x - 1, -1e-9, z - 1), Vec3(x + 1, 0, z + 1))
+    }
+    val w      = worldOf(plates, Seq(Vec3(0, 100, 0)))
+    val buffer = w.lightBuffer(0).get
+    val query  = w.newQuery()
+    for i <- 0 until 300 do
+      val p     = Vec3((i % 20) * 3.0 + 0.25, -2e-9, (i / 20) * 3.0 - 0.25)
+      val t     = w.lights(0).location - p
+      val reach = t.length
+      val d     = t / reach
+      assert(walked(w, p, d, reach, query), s"the walk from $p")
+      assert(w.occludedToward(buffer, p.x, p.y, p.z, d.x, d.y, d.z, reach, query), s"from $p")

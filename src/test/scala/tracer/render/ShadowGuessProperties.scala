@@ -8,9 +8,9 @@ import tracer.math.Vec3
 import tracer.scene.{Camera, Light, Scene, SceneObject}
 import tracer.testkit.Generators.unitVec
 
-/** The point lights' last-blocker guess ([[Shadows.pointToward]], [[Bvh.blocks]]) never changes
-  * an answer: a guess that blocks is a blocker the walk finds too, and a shadow ray gets the
-  * walk's share whatever was guessed before it.
+/** The point lights' last-blocker guess ([[Shadows.pointToward]], [[Bvh.blocks]], and for a light
+  * with a buffer [[World.itemBlocks]]) never changes an answer: a guess that blocks is a blocker
+  * the walk finds too, and a shadow ray gets the walk's share whatever was guessed before it.
   */
 class ShadowGuessProperties extends ScalaCheckSuite:
 
@@ -27,15 +27,19 @@ class ShadowGuessProperties extends ScalaCheckSuite:
 
   private val lights = Gen.listOfN(2, point.map(p => Light(p * 2)))
 
-  private val world: Gen[World] =
+  /** Worlds without light buffers, or with one for each point light (`shadowRays`). */
+  private def worlds(shadowRays: Long): Gen[World] =
     for n <- Gen.choose(1, 40); shapes <- Gen.listOfN(n, shape); ls <- lights
     yield World(
       Scene(
         Camera(Vec3(0, 0, -20), Vec3.Zero),
         lights = ls.toVector,
         objects = shapes.map(SceneObject(_)).toVector
-      )
+      ),
+      shadowRays = shadowRays
     )
+
+  private val world: Gen[World] = worlds(0)
 
   /** Points along a random segment: neighbouring shadow rays, as a row's shading points. */
   private val row: Gen[List[Vec3]] =
@@ -73,8 +77,11 @@ class ShadowGuessProperties extends ScalaCheckSuite:
         }
     }
 
-  property("pointToward gives the walk's share, whatever light, depth and guess came before"):
-    forAll(world, Gen.listOfN(6, Gen.zip(row, Gen.choose(0, 1), Gen.choose(0, 9)))) { (w, rows) =>
+  /** pointToward's share equals the walk's along rows of neighbouring points, whatever light,
+    * depth and guess came before.
+    */
+  private def sharesOfRows(worlds: Gen[World]) =
+    forAll(worlds, Gen.listOfN(6, Gen.zip(row, Gen.choose(0, 1), Gen.choose(0, 9)))) { (w, rows) =>
       val query   = w.newQuery()
       val shadows = Shadows(w, w.newQuery())
       rows.foreach { (points, k, depth) =>
@@ -88,3 +95,11 @@ class ShadowGuessProperties extends ScalaCheckSuite:
         }
       }
     }
+
+  property("pointToward gives the walk's share, whatever light, depth and guess came before"):
+    sharesOfRows(world)
+
+  property("through the lights' buffers too, guessing the last blocking item"):
+    sharesOfRows(
+      worlds(Long.MaxValue).suchThat(w => w.lights.indices.forall(w.lightBuffer(_).isDefined))
+    )
