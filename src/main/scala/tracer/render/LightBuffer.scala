@@ -196,23 +196,14 @@ object LightBuffer:
     // face only, as most do; else OnNone, OnSeveral or OnAlways.
     val on    = new Array[Byte](n)
     val parts = new Array[Double](4 * n)
-    // Perf: as build; an item's one part is found once, not in each of the three passes.
+    // Perf: as build; an item's one part is found once, not in each of the three passes. Each
+    // pass's work on one item is a small method of its own, called once an item: a method is
+    // compiled after a few hundred calls, where these loops written out in one method of 6.8 KB
+    // of bytecode ran interpreted until each was compiled on stack, one at a time (a 1280×720
+    // render of mesh-80000: 481 of the 1 ms samples of binned interpreted, 19 compiled; round 27).
     var i = 0
     while i < n do
-      if !(gap(rel, 6 * i) >= near) then on(i) = OnAlways
-      else
-        var faces = 0
-        var f     = 0
-        while f < 6 do
-          footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
-            if faces == 0 then
-              on(i) = f.toByte
-              parts(4 * i) = u0; parts(4 * i + 1) = u1; parts(4 * i + 2) = v0
-              parts(4 * i + 3) = v1
-            faces += 1
-          }
-          f += 1
-        if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
+      classify(rel, i, near, on, parts)
       i += 1
     val (windows, highs, sizes) = grids(rel, n, on, parts)
     val cells                   = sizes(18)
@@ -223,57 +214,117 @@ object LightBuffer:
     val start = new Array[Int](cells + 1)
     i = 0
     while i < n do
-      if on(i) != OnAlways && on(i) != OnNone then
-        var span = 0L
-        cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _) =>
-          span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
-        )
-        if span > widest then on(i) = OnAlways
-        else
-          cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
-            var cu = cu0
-            while cu <= cu1 do
-              var cv = cv0
-              while cv <= cv1 do
-                start(base + cu * nv + cv + 1) += 1
-                cv += 1
-              cu += 1
-          }
+      count(rel, on, parts, i, windows, sizes, widest, start)
       i += 1
     var c = 0
     while c < cells do
       start(c + 1) += start(c)
       c += 1
-    val items = new Array[Int](start(cells))
-    val next  = java.util.Arrays.copyOf(start, cells)
-    var count = 0
+    val items  = new Array[Int](start(cells))
+    val next   = java.util.Arrays.copyOf(start, cells)
+    var always = 0
     i = 0
     while i < n do
-      if on(i) == OnAlways then count += 1
-      else if on(i) != OnNone then
+      if on(i) == OnAlways then always += 1
+      else place(rel, on, parts, i, windows, sizes, items, next)
+      i += 1
+    val everyRay = new Array[Int](always)
+    always = 0
+    i = 0
+    while i < n do
+      if on(i) == OnAlways then
+        everyRay(always) = i
+        always += 1
+      i += 1
+    // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
+    // that length errs by less than a twentieth of the slack.
+    new LightBuffer(windows, highs, sizes, start, items, everyRay, owner, face, gaps, 1e7 * near)
+
+  /** Sets `on(i)` to item `i`'s one face, its part of it at `parts(4i)`; or to [[OnAlways]] for
+    * an item nearer the light than `near` (or not finite), [[OnNone]] for one on no face,
+    * [[OnSeveral]] for one on several.
+    */
+  private def classify(
+      rel: Array[Double],
+      i: Int,
+      near: Double,
+      on: Array[Byte],
+      parts: Array[Double]
+  ): Unit =
+    if !(gap(rel, 6 * i) >= near) then on(i) = OnAlways
+    else
+      // Perf: as binned; the faces the item lies on, counted over the six.
+      var faces = 0
+      var f     = 0
+      while f < 6 do
+        footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
+          if faces == 0 then
+            on(i) = f.toByte
+            parts(4 * i) = u0; parts(4 * i + 1) = u1; parts(4 * i + 2) = v0
+            parts(4 * i + 3) = v1
+          faces += 1
+        }
+        f += 1
+      if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
+
+  /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), or when it covers
+    * more than `widest` cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray
+    * or on no face is left alone.
+    */
+  private def count(
+      rel: Array[Double],
+      on: Array[Byte],
+      parts: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int],
+      widest: Long,
+      start: Array[Int]
+  ): Unit =
+    if on(i) != OnAlways && on(i) != OnNone then
+      // Perf: as binned; the cells an item covers, summed, then each counted.
+      var span = 0L
+      cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _) =>
+        span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
+      )
+      if span > widest then on(i) = OnAlways
+      else
         cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
           var cu = cu0
           while cu <= cu1 do
             var cv = cv0
             while cv <= cv1 do
-              val cell = base + cu * nv + cv
-              items(next(cell)) = i
-              next(cell) += 1
+              start(base + cu * nv + cv + 1) += 1
               cv += 1
             cu += 1
         }
-      i += 1
-    val always = new Array[Int](count)
-    count = 0
-    i = 0
-    while i < n do
-      if on(i) == OnAlways then
-        always(count) = i
-        count += 1
-      i += 1
-    // Why 10⁷ near: a ray's direction error is about 6·10⁻¹⁶ (r / s + 1), s ≥ near, so a ray of
-    // that length errs by less than a twentieth of the slack.
-    new LightBuffer(windows, highs, sizes, start, items, always, owner, face, gaps, 1e7 * near)
+
+  /** Places item `i` in each of its cells, at `next(c)` of `items` for cell c, and moves each such
+    * `next` on; an item on no face is left out.
+    */
+  private def place(
+      rel: Array[Double],
+      on: Array[Byte],
+      parts: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int],
+      items: Array[Int],
+      next: Array[Int]
+  ): Unit =
+    if on(i) != OnNone then
+      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
+        // Perf: as binned.
+        var cu = cu0
+        while cu <= cu1 do
+          var cv = cv0
+          while cv <= cv1 do
+            val cell = base + cu * nv + cv
+            items(next(cell)) = i
+            next(cell) += 1
+            cv += 1
+          cu += 1
+      }
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
     * high u and v (from `parts` for an item on one face; found again for one on several).
@@ -305,14 +356,10 @@ object LightBuffer:
     val highs   = Array.fill(12)(Double.NegativeInfinity)
     val low     = Array.fill(12)(Double.PositiveInfinity)
     val perFace = new Array[Int](6)
-    // Perf: as build.
+    // Perf: as binned, an item a call.
     var i = 0
     while i < n do
-      partsOf(rel, on, parts, i) { (f, u0, u1, v0, v1) =>
-        low(2 * f) = Math.min(low(2 * f), u0); low(2 * f + 1) = Math.min(low(2 * f + 1), v0)
-        highs(2 * f) = Math.max(highs(2 * f), u1); highs(2 * f + 1) = Math.max(highs(2 * f + 1), v1)
-        perFace(f) += 1
-      }
+      widen(rel, on, parts, i, low, highs, perFace)
       i += 1
     val sizes = new Array[Int](19)
     sizes(18) = (0 until 6).foldLeft(0) { (first, f) =>
@@ -329,6 +376,24 @@ object LightBuffer:
         first + nu * nv
     }
     (windows, highs, sizes)
+
+  /** Widens the windows of the faces item `i` lies on (their low u and v at 2f of `low`, high
+    * at 2f of `highs`) to take its parts, and counts it on each of them (`perFace`).
+    */
+  private def widen(
+      rel: Array[Double],
+      on: Array[Byte],
+      parts: Array[Double],
+      i: Int,
+      low: Array[Double],
+      highs: Array[Double],
+      perFace: Array[Int]
+  ): Unit =
+    partsOf(rel, on, parts, i) { (f, u0, u1, v0, v1) =>
+      low(2 * f) = Math.min(low(2 * f), u0); low(2 * f + 1) = Math.min(low(2 * f + 1), v0)
+      highs(2 * f) = Math.max(highs(2 * f), u1); highs(2 * f + 1) = Math.max(highs(2 * f + 1), v1)
+      perFace(f) += 1
+    }
 
   /** Runs `body` on each range of cells (u first, then v, inclusive) that item `i` covers, with
     * the face's first cell and its cells along v.
