@@ -403,17 +403,30 @@ private object MeshTree:
       from: Int,
       to: Int
   ): Unit =
+    // Perf: one call a face, so the face's work is compiled after a few hundred faces rather than
+    // interpreted until the loop is compiled on stack (round 22's pattern; mesh-80000 at
+    // 1280×720 had 51 interpreted samples here; docs/performance.md, round 27).
     val vertices = mesh.vertices
     val corners  = mesh.corners
-    // Perf: one pass computing each face's plane from its corners (Mesh.plane: the mesh keeps no
-    // copy of its own, docs/performance.md, round 7) and copying its corner offsets, in leaf
-    // order, in a method of its own so that it is compiled apart from the constructor.
-    var k = from
+    var k        = from
     while k < to do
-      val f = order(k)
-      Mesh.plane(vertices, corners, f) { (nx, ny, nz, d) =>
-        planes(4 * k) = nx; planes(4 * k + 1) = ny; planes(4 * k + 2) = nz; planes(4 * k + 3) = d
-      }
-      at(3 * k) = 3 * corners(3 * f); at(3 * k + 1) = 3 * corners(3 * f + 1)
-      at(3 * k + 2) = 3 * corners(3 * f + 2)
+      layFace(vertices, corners, order, planes, at, k)
       k += 1
+
+  /** Writes leaf-order face `k`'s plane, computed from its corners (Mesh.plane: the mesh keeps no
+    * copy of its own, docs/performance.md, round 7), and its corner offsets.
+    */
+  private def layFace(
+      vertices: IArray[Double],
+      corners: IArray[Int],
+      order: Array[Int],
+      planes: Array[Double],
+      at: Array[Int],
+      k: Int
+  ): Unit =
+    val f = order(k)
+    Mesh.plane(vertices, corners, f) { (nx, ny, nz, d) =>
+      planes(4 * k) = nx; planes(4 * k + 1) = ny; planes(4 * k + 2) = nz; planes(4 * k + 3) = d
+    }
+    at(3 * k) = 3 * corners(3 * f); at(3 * k + 1) = 3 * corners(3 * f + 1)
+    at(3 * k + 2) = 3 * corners(3 * f + 2)
