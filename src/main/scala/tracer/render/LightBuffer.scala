@@ -11,8 +11,8 @@ package tracer.render
   * so only the items of that direction's cell can block it: a grid lookup and a few tests of
   * those items in place of a walk down the tree, with the same test of each, so the same answer
   * (`LightBufferProperties`). And every point of the ray lies no farther from the light than the
-  * ray's start, so the test of a cell's items stops at the first whose box lies farther
-  * ([[gaps]]): those can only lie behind the shading point.
+  * ray's start, so the items whose boxes lie farther ([[gaps]]), the tail of the cell's list,
+  * can only lie behind the shading point and are skipped ([[Bvh.anyBlocks]]).
   *
   * Why exact: an item's cells are those of its box widened by 10⁻⁷ of its size (as the tree's
   * float boxes are rounded outwards), its part of a face widened by [[LightBuffer.Slack]] in the
@@ -34,7 +34,7 @@ package tracer.render
   * @param sizes       per face f, at 3f: its cells along u and along v, and its first cell's number
   * @param start       cell c's items are `items(start(c) until start(c + 1))`
   * @param items       the cells' items, numbers of the sorted items below, in increasing order in
-  *   each cell (so nearest the centre first)
+  *   each cell (so nearest the light, or the eye buffer's centre, first)
   * @param always      the items tested on every ray (those too near the light or too large), in
   *   increasing order
   * @param owner       sorted item i's primitive, in the tree's leaf order ([[BufferItems.owner]])

@@ -151,9 +151,9 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     grid(k)
 
   /** [[pointAlong]] toward the world's light `k`, a point light, from a point shaded `depth`
-    * reflections or refractions from the last allowed: the same share, from the light's
-    * [[LightBuffer]] when it has one, else trying the shape that blocked that light's last
-    * shadow ray from the same depth first.
+    * reflections or refractions from the last allowed: the same share, trying first what blocked
+    * that light's last shadow ray from the same depth (the buffer's item when the light has a
+    * [[LightBuffer]], else the shape), then the light's buffer or the walk.
     */
   def pointToward(
       k: Int,

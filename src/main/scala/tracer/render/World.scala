@@ -191,9 +191,12 @@ final class World(
     * toward the point light whose buffer is `buffer`, from (ox, oy, oz) in unit direction
     * (dx, dy, dz), `limit` the distance to the light: the same answer, from the unbounded shapes,
     * the buffer's items tested on every ray and those of the ray's cell (the tree when the
-    * buffer does not answer the ray).
+    * buffer does not answer the ray). The direction must point at the light and `limit` be the
+    * distance from the origin to it, as a shading point's shadow ray has them: the items whose
+    * boxes lie farther from the light than `limit` are skipped ([[Bvh.anyBlocks]]), which a
+    * shorter ray would need tested.
     */
-  def occludedToward(
+  private[render] def occludedToward(
       buffer: LightBuffer,
       ox: Double,
       oy: Double,
@@ -257,7 +260,7 @@ final class World(
     * unit direction (dx, dy, dz) before `limit`: a guess tested before [[occludedToward]], whose
     * answer it gives when true.
     */
-  def itemBlocks(
+  private[render] def itemBlocks(
       buffer: LightBuffer,
       item: Int,
       ox: Double,

@@ -161,20 +161,29 @@ class LightBufferProperties extends ScalaCheckSuite:
       assertEquals(cell, cell.sorted, s"cell $c")
     assertEquals(buffer.always.toSeq, buffer.always.toSeq.sorted)
 
-  test("a blocker just above the shading point, its box almost as far from the light, blocks"):
-    // The plate's gap (its top's distance from the light, rounded down to a float) lies within a
-    // float's step of the shadow ray's length: the test of the cell's items must still reach it.
+  test("a blocker just above the shading point, its gap within a float's step of the ray, blocks"):
+    // The plate under the light has its top 2·10⁻⁹ above the shading point: its gap (its widened
+    // box's distance from the light, less 10⁻⁹ of it, rounded down to a float) lies within a
+    // float's step below the shadow ray's length, so the test of the cell's items must reach
+    // it. The light sits 3·10⁻⁶ below the float 100: a gap rounded to the nearest float (100)
+    // would exceed the ray's length and skip the plate.
     val plates = (0 until 300).map { i =>
       val x = (i % 20) * 3.0
       val z = (i / 20) * 3.0
       Box(Vec3(x - 1, -1e-9, z - 1), Vec3(x + 1, 0, z + 1))
     }
-    val w      = worldOf(plates, Seq(Vec3(0, 100, 0)))
+    val light  = Vec3(0, 100 - 3e-6, 0)
+    val w      = worldOf(plates, Seq(light))
     val buffer = w.lightBuffer(0).get
     val query  = w.newQuery()
-    for i <- 0 until 300 do
-      val p     = Vec3((i % 20) * 3.0 + 0.25, -2e-9, (i / 20) * 3.0 - 0.25)
-      val t     = w.lights(0).location - p
+    val under  = Vec3(0, -2e-9, 0)
+    assert(buffer.gaps(0) <= (light - under).length, buffer.gaps(0))
+    assert((light - under).length - buffer.gaps(0) < Math.ulp(buffer.gaps(0)), buffer.gaps(0))
+    // The float nearest the plate's gap is 100, beyond the ray's length.
+    assertEquals((light.y - 1e-7).toFloat, 100f)
+    val others = (0 until 300).map(i => Vec3((i % 20) * 3.0 + 0.25, -2e-9, (i / 20) * 3.0 - 0.25))
+    for p <- under +: others do
+      val t     = light - p
       val reach = t.length
       val d     = t / reach
       assert(walked(w, p, d, reach, query), s"the walk from $p")
