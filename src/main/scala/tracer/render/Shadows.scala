@@ -169,21 +169,37 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     if inBeam >= 0 then pointAlong(fx, fy, fz, dx, dy, dz, reach)
     else
       world.lightBuffer(k) match
-        case Some(buffer) =>
-          val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
-          val b = itemGuess(g)
-          if b >= 0 && world.itemBlocks(buffer, b, fx, fy, fz, dx, dy, dz, reach, query) then 0.0
-          else
-            query.blockingItem = -1
-            val blocked = world.occludedToward(buffer, fx, fy, fz, dx, dy, dz, reach, query)
-            // An unbounded shape's block (a plane's) leaves the item at −1: no guess.
-            itemGuess(g) = if blocked then query.blockingItem else -1
-            if blocked then 0.0
-            else if !world.transmits then 1.0
-            else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
-        case None =>
+        case Some(buffer) => buffered(buffer, k, depth, fx, fy, fz, dx, dy, dz, reach)
+        case None         =>
           if guessing then guessed(k, depth, fx, fy, fz, dx, dy, dz, reach)
           else pointAlong(fx, fy, fz, dx, dy, dz, reach)
+
+  /** [[pointToward]] for light `k` through its buffer `buffer`, trying first the item that blocked
+    * the light's last shadow ray from the same depth.
+    */
+  private def buffered(
+      buffer: LightBuffer,
+      k: Int,
+      depth: Int,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      reach: Double
+  ): Double =
+    val g = Shadows.Depths * k + (depth & (Shadows.Depths - 1))
+    val b = itemGuess(g)
+    if b >= 0 && world.itemBlocks(buffer, b, fx, fy, fz, dx, dy, dz, reach, query) then 0.0
+    else
+      query.blockingItem = -1
+      val blocked = world.occludedToward(buffer, fx, fy, fz, dx, dy, dz, reach, query)
+      // An unbounded shape's block (a plane's) leaves the item at −1: no guess.
+      itemGuess(g) = if blocked then query.blockingItem else -1
+      if blocked then 0.0
+      else if !world.transmits then 1.0
+      else clearShare(everyClear, everyClear.length, fx, fy, fz, dx, dy, dz, reach)
 
   /** [[pointToward]] with the last blocker's guess, for a light without a buffer. */
   private def guessed(
