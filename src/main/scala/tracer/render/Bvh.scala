@@ -178,6 +178,41 @@ final class Bvh(
         .occludedBelow(node, ox, oy, oz, dx, dy, dz, limit, query)
     else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
 
+  // Each shape's place in leaf order (−1 for one left out, unbounded), for ownBlocks.
+  private val slots: Array[Int] =
+    val places = new Array[Int](shapes.length)
+    java.util.Arrays.fill(places, -1)
+    // Why: a plain loop, run once per tree (no closure to interpret per shape).
+    var k = 0
+    while k < prims.size do
+      places(prims.index(k)) = k
+      k += 1
+    places
+
+  /** True when shape `i` (its face `face` when it is a mesh: the face a nearest query named) is
+    * met by the ray at a t below `limit`, tested as the walks test it ([[Primitives.blocks]], a
+    * mesh's face by [[MeshTree.faceBlocks]]); false for a shape the tree does not hold. A shadow
+    * ray's first test of the surface it leaves ([[Shadows.pointToward]]).
+    */
+  def ownBlocks(
+      i: Int,
+      face: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    val k = slots(i)
+    if k < 0 then false
+    else if prims.kind(k) == Primitives.MeshKind then
+      val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
+      mesh.faceBlocks(mesh.leafFace(face), limit, ox, oy, oz, dx, dy, dz)
+    else Primitives.blocks(prims, k, limit, ox, oy, oz, dx, dy, dz, query)
+
   /** The number of primitives in the tree's leaves, for tests. */
   def primitiveCount: Int = prims.size
 

@@ -37,7 +37,7 @@ final class MeshTree(
   private val vertices      = mesh.vertices
   // Leaf order: face k of the leaves is face `faces(k)` of the mesh, its plane at 4k, the
   // offsets of its corners in `vertices` at 3k.
-  private val (planes, at) = MeshTree.leafOrder(mesh, faces, pool)
+  private val (planes, at, leafOf) = MeshTree.leafOrder(mesh, faces, pool)
   // The walks with four boxes at a time, when asked for (a class of their own, loaded only then:
   // no function names it, as in Bvh).
   private val fast: Option[MeshLanes] =
@@ -90,6 +90,9 @@ final class MeshTree(
 
   /** The mesh's number of leaf-order face `k`: the face [[nearest]] names. */
   private[render] def faceNumber(k: Int): Int = faces(k)
+
+  /** The leaf-order number of the mesh's face `f` (the inverse of [[faceNumber]]). */
+  private[render] def leafFace(f: Int): Int = leafOf(f)
 
   /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the mesh's
     * nearest face at a t ≤ `limit` (+∞ when there is none), the face itself left in
@@ -381,25 +384,29 @@ private object MeshTree:
     (WideTree.collapse(tree, pool), tree.order)
 
   /** The planes (4 doubles a face, as [[tracer.geometry.Mesh.planes]] holds them) and corner
-    * offsets (3 ints) of `mesh`'s faces `order`, on `pool` when one is given (in parts:
-    * [[BvhBuilder.inParts]]).
+    * offsets (3 ints) of `mesh`'s faces `order`, and each face's place in that order, on `pool`
+    * when one is given (in parts: [[BvhBuilder.inParts]]).
     */
   def leafOrder(
       mesh: Mesh,
       order: Array[Int],
       pool: Option[ExecutionContext]
-  ): (Array[Double], Array[Int]) =
+  ): (Array[Double], Array[Int], Array[Int]) =
     val planes = new Array[Double](4 * order.length)
     val at     = new Array[Int](3 * order.length)
-    BvhBuilder.inParts(order.length, pool)((from, to) => lay(mesh, order, planes, at, from, to))
-    (planes, at)
+    val places = new Array[Int](order.length)
+    BvhBuilder.inParts(order.length, pool)((from, to) =>
+      lay(mesh, order, planes, at, places, from, to)
+    )
+    (planes, at, places)
 
-  /** Writes the planes and corner offsets of leaf-order faces from until to. */
+  /** Writes the planes, corner offsets and places of leaf-order faces from until to. */
   private def lay(
       mesh: Mesh,
       order: Array[Int],
       planes: Array[Double],
       at: Array[Int],
+      places: Array[Int],
       from: Int,
       to: Int
   ): Unit =
@@ -410,11 +417,11 @@ private object MeshTree:
     val corners  = mesh.corners
     var k        = from
     while k < to do
-      layFace(vertices, corners, order, planes, at, k)
+      layFace(vertices, corners, order, planes, at, places, k)
       k += 1
 
   /** Writes leaf-order face `k`'s plane, computed from its corners (Mesh.plane: the mesh keeps no
-    * copy of its own, docs/performance.md, round 7), and its corner offsets.
+    * copy of its own, docs/performance.md, round 7), its corner offsets, and its place k.
     */
   private def layFace(
       vertices: IArray[Double],
@@ -422,9 +429,11 @@ private object MeshTree:
       order: Array[Int],
       planes: Array[Double],
       at: Array[Int],
+      places: Array[Int],
       k: Int
   ): Unit =
     val f = order(k)
+    places(f) = k
     Mesh.plane(vertices, corners, f) { (nx, ny, nz, d) =>
       planes(4 * k) = nx; planes(4 * k + 1) = ny; planes(4 * k + 2) = nz; planes(4 * k + 3) = d
     }

@@ -103,6 +103,7 @@ final class Shading(world: World, mode: ShadingMode):
     val sy    = query.sy
     val sz    = query.sz
     val leaf  = query.leaf
+    val face  = query.face
     val front = query.front
     // Equations 40 and 43: shadow and reflected rays start just off the surface, on the side the
     // ray came from (the geometric side, even where a smooth normal leans).
@@ -111,12 +112,11 @@ final class Shading(world: World, mode: ShadingMode):
     val s0z     = pz + nz * Shading.Epsilon
     val surface = world.surface(i, leaf)
     val leaning = sx != nx || sy != ny || sz != nz
-    lit(surface, pigment(i, leaf, px, py, pz), sx, sy, sz, leaning, s0x, s0y, s0z, px, py, pz)(
-      dx,
-      dy,
-      dz,
-      depth
-    )
+    lit(i, face, surface, pigment(i, leaf, px, py, pz), sx, sy, sz, leaning, s0x, s0y, s0z)(
+      px,
+      py,
+      pz
+    )(dx, dy, dz, depth)
     val litR = red
     val litG = green
     val litB = blue
@@ -150,7 +150,9 @@ final class Shading(world: World, mode: ShadingMode):
     * and by its fade A(d) (version 4), d the distance from the hit point p to the light (an area
     * light's centre), as POV-Ray measures it. rn is the shading normal s; d the ray's direction.
     *
-    * `leaning` says that s is a smooth mesh's interpolated normal, not the face's own.
+    * `leaning` says that s is a smooth mesh's interpolated normal, not the face's own; `i` is the
+    * shape hit and `face` its face (a mesh's), tested first for a point light behind the surface
+    * ([[World.ownBlocks]]).
     *
     * Perf: the channels summed in the fields, light by light in document order, each light in a
     * method of its own ([[light]]): this loop stays small, so the JIT compiles the loop, the light
@@ -158,6 +160,8 @@ final class Shading(world: World, mode: ShadingMode):
     * docs/performance.md, round 9), with no Colour or closure per light.
     */
   private def lit(
+      i: Int,
+      face: Int,
       surface: Surface,
       colour: Colour,
       sx: Double,
@@ -166,11 +170,8 @@ final class Shading(world: World, mode: ShadingMode):
       leaning: Boolean,
       s0x: Double,
       s0y: Double,
-      s0z: Double,
-      px: Double,
-      py: Double,
-      pz: Double
-  )(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
+      s0z: Double
+  )(px: Double, py: Double, pz: Double)(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
     val oneSided = leaning || surface.transmit > 0
     red = 0.0
@@ -179,17 +180,18 @@ final class Shading(world: World, mode: ShadingMode):
     // Perf: a counted loop over the lights (see above).
     var k = 0
     while k < world.lights.length do
-      light(k, surface, colour, diffuse, oneSided, sx, sy, sz, s0x, s0y, s0z, px, py, pz)(
-        dx,
-        dy,
-        dz,
-        depth
-      )
+      light(k, i, face, surface, colour, diffuse, oneSided, sx, sy, sz, s0x, s0y, s0z)(
+        px,
+        py,
+        pz
+      )(dx, dy, dz, depth)
       k += 1
 
   /** Adds to red, green and blue what light `k` gives the point, as [[lit]] says. */
   private def light(
       k: Int,
+      i: Int,
+      face: Int,
       surface: Surface,
       colour: Colour,
       diffuse: Double,
@@ -199,11 +201,8 @@ final class Shading(world: World, mode: ShadingMode):
       sz: Double,
       s0x: Double,
       s0y: Double,
-      s0z: Double,
-      px: Double,
-      py: Double,
-      pz: Double
-  )(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
+      s0z: Double
+  )(px: Double, py: Double, pz: Double)(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
     val light = world.lights(k)
     val tx    = light.location.x - s0x
     val ty    = light.location.y - s0y
@@ -219,10 +218,13 @@ final class Shading(world: World, mode: ShadingMode):
     // off-centre sub-lights) need the rule said out loud.
     val behind = cos < Shading.FarSide && (oneSided || light.area.isDefined)
     if !behind then
+      // A point light behind the surface (cos < 0: S0 lies on the other side) is mostly
+      // shadowed by the surface itself, so that is tested first (World.ownBlocks).
       val share =
-        if light.area.isEmpty then
-          shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
-        else shadows.areaFrom(s0x, s0y, s0z, k)
+        if light.area.isDefined then shadows.areaFrom(s0x, s0y, s0z, k)
+        else if cos < 0 && world.ownBlocks(i, face, s0x, s0y, s0z, sdx, sdy, sdz, reach, query)
+        then 0.0
+        else shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
       if share > 0 then
         // Without fade the share is used as it is (the same bits as before version 4).
         val reaching = if light.fade.isEmpty then share else faded(light, share, px, py, pz)

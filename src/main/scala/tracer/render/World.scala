@@ -273,6 +273,29 @@ final class World(
       query: Query
   ): Boolean = shadowTree.itemBlocks(buffer, item, ox, oy, oz, dx, dy, dz, limit, query)
 
+  /** True when shape `i` (its face `face`, a mesh's face a nearest query named) blocks the
+    * shadow ray from (ox, oy, oz) in unit direction (dx, dy, dz) at a t below `limit`, tested as
+    * the walks test it ([[Bvh.ownBlocks]]); false for an unbounded shape and in a world that lets
+    * light through (where a shape may block only part of the light).
+    *
+    * Perf: a point light behind a flat opaque surface is shadowed by that surface itself: one
+    * test of it answers the shadow ray before the light's guess and buffer (docs/performance.md,
+    * round 28).
+    */
+  def ownBlocks(
+      i: Int,
+      face: Int,
+      ox: Double,
+      oy: Double,
+      oz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      limit: Double,
+      query: Query
+  ): Boolean =
+    !transmits && bvh.ownBlocks(i, face, ox, oy, oz, dx, dy, dz, limit, query)
+
   /** Primitives.distance of unbounded shape `k` of those shadow rays toward a buffered light
     * ask (all of them, or in a world that lets light through, the opaque ones).
     */

@@ -10,7 +10,9 @@ import tracer.testkit.Generators.unitVec
 
 /** The point lights' last-blocker guess ([[Shadows.pointToward]], [[Bvh.blocks]], and for a light
   * with a buffer [[World.itemBlocks]]) never changes an answer: a guess that blocks is a blocker
-  * the walk finds too, and a shadow ray gets the walk's share whatever was guessed before it.
+  * the walk finds too, and a shadow ray gets the walk's share whatever was guessed before it. The
+  * same for the shading point's own surface, tested first for a light behind it
+  * ([[World.ownBlocks]]).
   */
 class ShadowGuessProperties extends ScalaCheckSuite:
 
@@ -103,3 +105,30 @@ class ShadowGuessProperties extends ScalaCheckSuite:
     sharesOfRows(
       worlds(Long.MaxValue).suchThat(w => w.lights.indices.forall(w.lightBuffer(_).isDefined))
     )
+
+  property(
+    "a surface's own test is its shape's (a mesh's: the face hit), and a blocker the walk finds"
+  ):
+    forAll(world, Gen.listOfN(30, Gen.zip(point, point))) { (w, pairs) =>
+      val query = w.newQuery()
+      val eye   = Vec3(0, 0, -20)
+      pairs.foreach { (aim, light) =>
+        val d = (aim - eye).normalisedOr(Vec3.UnitZ)
+        val i = w.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, Double.PositiveInfinity, query)
+        if i >= 0 then
+          val face = query.face
+          Hits.record(w.shape(i), eye.x, eye.y, eye.z, d.x, d.y, d.z, query.distance, query)
+          val s0 = Vec3(query.px, query.py, query.pz) +
+            Vec3(query.nx, query.ny, query.nz) * Shading.Epsilon
+          toward(s0, light).foreach { (sd, reach) =>
+            val own    = w.ownBlocks(i, face, s0.x, s0.y, s0.z, sd.x, sd.y, sd.z, reach, query)
+            val target = w.shape(i) match
+              case m: Mesh => m.face(face)
+              case s       => s
+            val tested = Shape.bounds(w.shape(i)).isDefined &&
+              Shape.distance(target, Ray(s0, sd)) < reach
+            assertEquals(own, tested, s"${w.shape(i)} $face ${Ray(s0, sd)} $reach")
+            if own then assert(w.occludedAlong(s0.x, s0.y, s0.z, sd.x, sd.y, sd.z, reach, query))
+          }
+      }
+    }
