@@ -168,30 +168,10 @@ private[render] final class BvhBuilder private (
   ): Int =
     // The node's box, and the box of the primitives' centroids: from the parent's bins when it
     // had them (Perf: a pass over the primitives saved at every level), else from the primitives.
-    // Why: the centroids' box, narrowed below.
-    var cl0, cl1, cl2 = Double.PositiveInfinity
-    // Why: as cl0.
-    var ch0, ch1, ch2 = Double.NegativeInfinity
-    val nb            = 6 * node
-    if known.found then
-      cl0 = known.lo0; cl1 = known.lo1; cl2 = known.lo2
-      ch0 = known.hi0; ch1 = known.hi1; ch2 = known.hi2
-    else
-      for a <- 0 until 3 do
-        boxes(nb + a) = Float.PositiveInfinity; boxes(nb + 3 + a) = Float.NegativeInfinity
-    var k = if known.found then end else start
-    while k < end do
-      var a = 0
-      while a < 3 do
-        boxes(nb + a) = boxes(nb + a) min boxLo(3 * k + a)
-        boxes(nb + 3 + a) = boxes(nb + 3 + a) max boxHi(3 * k + a)
-        a += 1
-      cl0 = cl0 min centre(3 * k); cl1 = cl1 min centre(3 * k + 1)
-      cl2 = cl2 min centre(3 * k + 2)
-      ch0 = ch0 max centre(3 * k); ch1 = ch1 max centre(3 * k + 1)
-      ch2 = ch2 max centre(3 * k + 2)
-      k += 1
-    val n = end - start
+    val cs  = if known.found then known else enclose(node, start, end)
+    val cl0 = cs.lo0; val cl1 = cs.lo1; val cl2 = cs.lo2
+    val ch0 = cs.hi0; val ch1 = cs.hi1; val ch2 = cs.hi2
+    val n   = end - start
     // Split along the axis where the centroids spread most.
     // Perf: the axis, its low end and extent as three values, no tuple (boxed) per node.
     val axis =
@@ -208,67 +188,13 @@ private[render] final class BvhBuilder private (
       // Perf: as many bins as primitives below Bins: a node's fixed cost (clearing the bins, the
       // two sweeps) is per bin, and most nodes are small (the 1.3M-face mesh's build spent more
       // in the sweeps of 16 bins than on its primitives; docs/performance.md, round 7).
-      val nb               = Math.min(Bins, n)
-      def bin(k: Int): Int =
-        Math.min(nb - 1, ((centre(3 * k + axis) - low) / extent * nb).toInt)
-      val binCount = s.binCount
-      val binLo    = s.binLo
-      val binHi    = s.binHi
-      // Bin the primitives along the axis.
-      val binCLo = s.binCLo
-      val binCHi = s.binCHi
-      java.util.Arrays.fill(binCount, 0, nb, 0)
-      java.util.Arrays.fill(binLo, 0, 3 * nb, Double.PositiveInfinity)
-      java.util.Arrays.fill(binHi, 0, 3 * nb, Double.NegativeInfinity)
-      java.util.Arrays.fill(binCLo, 0, 3 * nb, Double.PositiveInfinity)
-      java.util.Arrays.fill(binCHi, 0, 3 * nb, Double.NegativeInfinity)
-      k = start
-      while k < end do
-        binOne(k, bin(k), s)
-        k += 1
-      // Sweep from the left: leftCost(s) = count · area of bins 0..s.
-      // Perf: each sweep's box in six locals (registers), not in the scratch array: the sweeps
-      // were a quarter of the 1.3M-face mesh's build (docs/performance.md, round 8). The same
-      // minima, maxima and area as before, so the same costs bit for bit.
-      val leftCost   = s.leftCost
-      var x0, y0, z0 = Double.PositiveInfinity
-      var x1, y1, z1 = Double.NegativeInfinity
-      var c          = 0
-      var step       = 0
-      while step < nb - 1 do
-        c += binCount(step)
-        val at = 3 * step
-        x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
-        x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
-        leftCost(step) = c * surface(x1 - x0, y1 - y0, z1 - z0)
-        step += 1
-      // Sweep from the right, keeping the cheapest split.
-      x0 = Double.PositiveInfinity; y0 = Double.PositiveInfinity; z0 = Double.PositiveInfinity
-      x1 = Double.NegativeInfinity; y1 = Double.NegativeInfinity; z1 = Double.NegativeInfinity
-      c = 0
-      var best     = 0
-      var bestCost = Double.PositiveInfinity
-      step = nb - 1
-      while step > 0 do
-        c += binCount(step)
-        val at = 3 * step
-        x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
-        x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
-        val cost = leftCost(step - 1) + c * surface(x1 - x0, y1 - y0, z1 - z0)
-        if cost < bestCost then
-          bestCost = cost
-          best = step - 1
-        step -= 1
-      if n <= MaxLeaf && bestCost >= n * area(boxes, 6 * node, 6 * node + 3) then leaf()
+      val nb = Math.min(Bins, n)
+      binAll(start, end, axis, low, extent, nb, s)
+      val best = cheapest(nb, s)
+      if n <= MaxLeaf && s.bestCost >= n * area(boxes, 6 * node, 6 * node + 3) then leaf()
       else
-        // Partition in place: bins 0..best to the left.
-        var i = start
-        var j = end - 1
-        while i <= j do
-          if bins(i) <= best then i += 1
-          else
-            swap(i, j)
-            j -= 1
+        // Bins 0..best to the left.
+        val i      = partition(start, end, best)
         val binned = i != start && i != end
         val mid    = if binned then i else (start + end) / 2
         val left   = free // the right child at left + 1; then the left subtree's range, the right's
@@ -292,6 +218,114 @@ private[render] final class BvhBuilder private (
             rightKnown
           )
         1 + l + r
+
+  // Perf: each pass over a node's primitives or bins is a method of its own, so `divide` has no
+  // loop: a loop written out in that large method ran in its on-stack compilations, which C2
+  // took 120–180 ms to make for each, while the build waited in the interpreter or in C1; a
+  // small method is compiled in a few milliseconds (docs/performance.md, round 28 and 29).
+
+  /** Writes the box of prims(start until end) as node `node`'s and returns their centroids' box. */
+  private def enclose(node: Int, start: Int, end: Int): Known =
+    // Why: the centroids' box, narrowed in a counted loop.
+    var cl0, cl1, cl2 = Double.PositiveInfinity
+    // Why: as cl0.
+    var ch0, ch1, ch2 = Double.NegativeInfinity
+    val nb            = 6 * node
+    for a <- 0 until 3 do
+      boxes(nb + a) = Float.PositiveInfinity; boxes(nb + 3 + a) = Float.NegativeInfinity
+    var k = start
+    while k < end do
+      var a = 0
+      while a < 3 do
+        boxes(nb + a) = boxes(nb + a) min boxLo(3 * k + a)
+        boxes(nb + 3 + a) = boxes(nb + 3 + a) max boxHi(3 * k + a)
+        a += 1
+      cl0 = cl0 min centre(3 * k); cl1 = cl1 min centre(3 * k + 1)
+      cl2 = cl2 min centre(3 * k + 2)
+      ch0 = ch0 max centre(3 * k); ch1 = ch1 max centre(3 * k + 1)
+      ch2 = ch2 max centre(3 * k + 2)
+      k += 1
+    Known(true, cl0, cl1, cl2, ch0, ch1, ch2)
+
+  /** Drops prims(start until end) into `nb` bins along `axis` by their centroids, which start at
+    * `low` and span `extent` there: the scratch bins' counts, boxes and centroids' boxes.
+    */
+  private def binAll(
+      start: Int,
+      end: Int,
+      axis: Int,
+      low: Double,
+      extent: Double,
+      nb: Int,
+      s: Scratch
+  ): Unit =
+    java.util.Arrays.fill(s.binCount, 0, nb, 0)
+    java.util.Arrays.fill(s.binLo, 0, 3 * nb, Double.PositiveInfinity)
+    java.util.Arrays.fill(s.binHi, 0, 3 * nb, Double.NegativeInfinity)
+    java.util.Arrays.fill(s.binCLo, 0, 3 * nb, Double.PositiveInfinity)
+    java.util.Arrays.fill(s.binCHi, 0, 3 * nb, Double.NegativeInfinity)
+    var k = start
+    while k < end do
+      binOne(k, Math.min(nb - 1, ((centre(3 * k + axis) - low) / extent * nb).toInt), s)
+      k += 1
+
+  /** The last bin of the cheapest split of the `nb` scratch bins into bins 0..best and the rest
+    * (0 when none is cheaper than +∞), with that split's cost left in `s.bestCost`: the surface
+    * area heuristic, each side's primitive count times its box's area.
+    */
+  private def cheapest(nb: Int, s: Scratch): Int =
+    val binCount = s.binCount
+    val binLo    = s.binLo
+    val binHi    = s.binHi
+    // Sweep from the left: leftCost(s) = count · area of bins 0..s.
+    // Perf: each sweep's box in six locals (registers), not in the scratch array: the sweeps
+    // were a quarter of the 1.3M-face mesh's build (docs/performance.md, round 8). The same
+    // minima, maxima and area as before, so the same costs bit for bit.
+    val leftCost   = s.leftCost
+    var x0, y0, z0 = Double.PositiveInfinity
+    var x1, y1, z1 = Double.NegativeInfinity
+    var c          = 0
+    var step       = 0
+    while step < nb - 1 do
+      c += binCount(step)
+      val at = 3 * step
+      x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
+      x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
+      leftCost(step) = c * surface(x1 - x0, y1 - y0, z1 - z0)
+      step += 1
+    // Sweep from the right, keeping the cheapest split.
+    x0 = Double.PositiveInfinity; y0 = Double.PositiveInfinity; z0 = Double.PositiveInfinity
+    x1 = Double.NegativeInfinity; y1 = Double.NegativeInfinity; z1 = Double.NegativeInfinity
+    c = 0
+    var best     = 0
+    var bestCost = Double.PositiveInfinity
+    step = nb - 1
+    while step > 0 do
+      c += binCount(step)
+      val at = 3 * step
+      x0 = x0 min binLo(at); y0 = y0 min binLo(at + 1); z0 = z0 min binLo(at + 2)
+      x1 = x1 max binHi(at); y1 = y1 max binHi(at + 1); z1 = z1 max binHi(at + 2)
+      val cost = leftCost(step - 1) + c * surface(x1 - x0, y1 - y0, z1 - z0)
+      if cost < bestCost then
+        bestCost = cost
+        best = step - 1
+      step -= 1
+    s.bestCost = bestCost
+    best
+
+  /** Moves the primitives of start until end whose bin is at most `best` before the others, in
+    * place, and returns where the others begin.
+    */
+  private def partition(start: Int, end: Int, best: Int): Int =
+    // Why: the two ends of the unsorted middle move towards each other.
+    var i = start
+    var j = end - 1
+    while i <= j do
+      if bins(i) <= best then i += 1
+      else
+        swap(i, j)
+        j -= 1
+    i
 
   /** Puts primitive k into bin b of the scratch bins: its number, count, box and centroid.
     *
@@ -493,6 +527,10 @@ private[render] object BvhBuilder:
     val leftCost = new Array[Double](Bins)
     val binCLo   = new Array[Double](3 * Bins)
     val binCHi   = new Array[Double](3 * Bins)
+
+    /** The cost of the split [[BvhBuilder.cheapest]] found last. */
+    // Why: written by each node's sweep and read back at once by the same thread.
+    var bestCost = Double.PositiveInfinity
 
     /** When `binned`: writes the box of bins `from` to `to` into `boxes` at `at` and returns
       * their centroids' box; else [[Known.None]].
