@@ -214,6 +214,30 @@ class KernelProperties extends ScalaCheckSuite:
       }
     }
 
+  property("Polynomial.ulp is Math.ulp, bit for bit, for doubles of every kind"):
+    val edges = List(
+      0.0,
+      -0.0,
+      Double.MinPositiveValue,
+      java.lang.Double.MIN_NORMAL,
+      Double.MaxValue,
+      Double.PositiveInfinity,
+      Double.NegativeInfinity,
+      Double.NaN,
+      java.lang.Double.longBitsToDouble(53L << 52),
+      java.lang.Double.longBitsToDouble((53L << 52) - 1),
+      java.lang.Double.longBitsToDouble(52L << 52),
+      java.lang.Double.longBitsToDouble(0x7fefffffffffffffL)
+    )
+    val anyDouble = Gen.oneOf(
+      Gen.long.map(java.lang.Double.longBitsToDouble),
+      Gen.choose(-10.0, 10.0),
+      Gen.oneOf(edges ++ edges.map(-_))
+    )
+    forAll(anyDouble) { x =>
+      assertEquals(bits(Polynomial.ulp(x)), bits(Math.ulp(x)), s"$x")
+    }
+
   property("rootsInto finds Polynomial.roots' roots, bit for bit"):
     val coefficient = Gen.frequency(4 -> Gen.choose(-10.0, 10.0), 1 -> Gen.const(0.0))
     forAll(Gen.listOfN(5, coefficient), Gen.choose(-5.0, 0.0), Gen.choose(0.0, 5.0)) {
