@@ -14,7 +14,8 @@
 # use) with the whole `tracer` process, N runs each (default 3), and prints a Markdown table of
 # the best wall time, the best Tracetime (rendering only) and the primary rays per second. With
 # --povray it renders the same scenes with POV-Ray 3.7 (`povray +WT<threads> -A`) and adds the
-# ratio tracer/POV-Ray. Also times a tiny 32x24 picture of the few-object scene, where start-up
+# ratio tracer/POV-Ray (the processor's model goes to standard error first: the ratios move with
+# the machine). Also times a tiny 32x24 picture of the few-object scene, where start-up
 # is everything. With --movie it times instead the first 48 frames of the project's animation at
 # 320x180 made into an H.264 movie: scripts/movie.sh against POV-Ray's own animation loop
 # (+KFI1 +KFF48 over the frames' twins, without their textures), each encoded by ffmpeg.
@@ -69,6 +70,11 @@ if $povray && ! command -v povray >/dev/null; then echo "bench.sh: povray is not
 
 tracer="$home/tracer"
 "$tracer" --help >/dev/null # builds the jar if needed, outside the timings
+# The machine, on standard error: the ratios move with it (docs/performance.md, round 29).
+if [ -r /proc/cpuinfo ]; then
+  awk -F': ' '/^model name/ { m = $2 } /^cpu family/ { f = $2 } /^model\t/ { d = $2 } /^processor/ { n++ }
+    END { if (m != "") printf "bench.sh: machine: %s (family %s, model %s), %d processors\n", m, f, d, n }' /proc/cpuinfo >&2
+fi
 # The demo module (the benchmark scenes, the animation, the POV-Ray export) runs from its own jar.
 demo() { "$home/scripts/demo.sh" "$@"; }
 dir="$home/scenes/bench"
