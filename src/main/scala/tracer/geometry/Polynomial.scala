@@ -217,7 +217,7 @@ object Polynomial:
     * the gallery's solids in steady state, one call a Newton step of the torus's roots; with this,
     * steady frames 1.5% faster (docs/performance.md, round 29).
     */
-  inline def ulp(x: Double): Double =
+  private[geometry] inline def ulp(x: Double): Double =
     val exponent = java.lang.Double.doubleToRawLongBits(x) & ExponentBits
     if exponent >= UlpNormalFrom && exponent != ExponentBits then
       java.lang.Double.longBitsToDouble(exponent - UlpShift)
