@@ -2,6 +2,7 @@ package tracer.cli
 
 import java.nio.charset.StandardCharsets.UTF_8
 import java.nio.file.{Files, Path}
+import java.nio.file.attribute.PosixFilePermissions
 import java.util.concurrent.TimeUnit
 import scala.jdk.CollectionConverters.*
 import tracer.testkit.{Images, Processes}
@@ -108,6 +109,21 @@ class LauncherSuite extends munit.FunSuite with Images:
     java.toFile.setExecutable(true)
     home
 
+  /** The options that put the render's rows below the JIT, followed by a space, which the
+    * launcher passes on Linux when it runs un-niced, as it does under this test when this process
+    * is un-niced (launcher.sh, tracer_java_flags); otherwise nothing.
+    */
+  private val priority: String =
+    val stat =
+      try Files.readString(Path.of("/proc/self/stat"), UTF_8)
+      catch case _: java.io.IOException => ""
+    val fields = stat.substring(stat.lastIndexOf(") ") + 2).split(' ')
+    if fields.length > 16 && fields(16) == "0" then
+      "-XX:ThreadPriorityPolicy=1 -XX:JavaPriority1_To_OSPriority=4 " +
+        (6 to 10).map(p => s"-XX:JavaPriority${p}_To_OSPriority=0 ").mkString +
+        "-XX:CompilerThreadPriority=0 -XX:VMThreadPriority=0 "
+    else ""
+
   work.test(
     "it takes the newest Java >= 17 of JAVA_HOME, PATH and the JDK directories, or TRACER_JAVA"
   ): d =>
@@ -130,19 +146,19 @@ class LauncherSuite extends munit.FunSuite with Images:
     // JDK 23 and newer are told to let Scala's LazyVals use sun.misc.Unsafe without a warning.
     assertEquals(
       chosen(),
-      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JDK_DIRS" -> Some(d.resolve("none").toString)),
-      s"jdk-19.0.1 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-19.0.1 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.toString), "TRACER_JAVA_OPTS" -> Some("-Xmx1g")),
-      s"jdk-11.0.2 -Xmx1g -jar $jar --version"
+      s"jdk-11.0.2 $priority-Xmx1g -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.resolve("bin/java").toString)),
-      s"jdk-11.0.2 -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-11.0.2 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("a JDK whose path has a newline does not lend its neighbours the wrong home"): d =>
@@ -162,7 +178,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals((e.status, e.err), (0, ""))
     assertEquals(
       e.out.trim,
-      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
@@ -289,3 +305,89 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals(e.status, 0, e.out + e.err)
     assert(e.out.contains("\rtracer: rendering ") && e.out.contains(" rows)"), e.out)
     assert(!e.out.contains("WARNING"), e.out)
+
+  /** The nice value and user-mode clock ticks of each thread of process `pid` whose name
+    * (`/proc`'s `comm`, 15 characters at most) starts with `name`; none once it has ended.
+    */
+  private def threads(pid: Long, name: String): List[(Int, Long)] =
+    val tasks =
+      try Files.list(Path.of(s"/proc/$pid/task")).iterator.asScala.toList
+      catch case _: java.io.IOException => Nil
+    tasks.flatMap { task =>
+      try
+        val comm = Files.readString(task.resolve("comm"), UTF_8).trim
+        val stat = Files.readString(task.resolve("stat"), UTF_8)
+        // The fields after the name: state, 10 more, user time (11), …, nice (16).
+        val fields = stat.substring(stat.lastIndexOf(") ") + 2).split(' ')
+        if comm.startsWith(name) then Some((fields(16).toInt, fields(11).toLong)) else None
+      catch case _: java.io.IOException | _: NumberFormatException => None
+    }
+
+  /** The nice values of the render's threads once they have rendered for a while, and of the
+    * JIT's C2 thread then, for the launcher started with `prefix` before it (e.g. `nice -n 3`).
+    */
+  private def priorities(d: Path, prefix: String*): (List[Int], List[Int]) =
+    val command = prefix ++ Seq(launcher.toString, "-x", "1200", "-a", "3", "-p", "2", "o.png")
+    val process = ProcessBuilder(command.asJava)
+      .directory(d.toFile)
+      .redirectInput(d.resolve("showcase.xml").toFile)
+      .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+      .redirectError(ProcessBuilder.Redirect.DISCARD)
+      .start()
+    try
+      // nice and the launcher each replace themselves, so the JVM keeps this process's number.
+      val pid      = process.pid
+      val deadline = System.nanoTime + TimeUnit.SECONDS.toNanos(100)
+      // Why: polled until the rows have run for 20 clock ticks (their first row sets their
+      // priority), or the process ends.
+      var rows = threads(pid, "tracer-render")
+      while process.isAlive && System.nanoTime < deadline && rows.map(_._2).sum < 20 do
+        Thread.sleep(10)
+        rows = threads(pid, "tracer-render")
+      (rows.map(_._1), threads(pid, "C2 Compiler").map(_._1))
+    finally
+      process.destroy()
+      process.waitFor(30, TimeUnit.SECONDS): Unit
+
+  work.test("the rows run at nice 4, the JIT at 0; a niced run keeps its niceness everywhere"): d =>
+    assume(Files.isDirectory(Path.of("/proc/self/task")), "needs Linux's /proc")
+    assume(Files.isExecutable(Path.of("/usr/bin/nice")), "needs nice(1)")
+    Files.copy(home.resolve("scenes/showcase.xml"), d.resolve("showcase.xml"))
+    Files.createSymbolicLink(d.resolve("textures"), home.resolve("scenes/textures"))
+    val (rows, jit) = priorities(d)
+    assertEquals(rows, List(4, 4), "the two render threads")
+    assertEquals(jit, List(0))
+    val (nicedRows, nicedJit) = priorities(d, "/usr/bin/nice", "-n", "3")
+    assertEquals(nicedRows, List(3, 3))
+    assertEquals(nicedJit, List(3))
+
+  work.test(
+    "for a user other than root nothing reaches stderr (the JVM's priority warning dropped)"
+  ): d =>
+    assume(
+      Files.isExecutable(Path.of("/usr/bin/setpriv")) &&
+        new com.sun.security.auth.module.UnixSystem().getUid == 0,
+      "needs root and setpriv(1) to run the launcher as nobody"
+    )
+    Files.setPosixFilePermissions(
+      d,
+      PosixFilePermissions.fromString("rwxrwxrwx")
+    )
+    val nobody = Seq("/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups")
+    // The warning the JVM gives such a user, which the launcher must know to drop.
+    val jvm = Processes.run(
+      nobody ++ Seq(
+        Path.of(System.getProperty("java.home"), "bin", "java").toString,
+        "-XX:ThreadPriorityPolicy=1",
+        "-version"
+      ),
+      d
+    )
+    assert(jvm.err.contains("warning: -XX:ThreadPriorityPolicy=1 may require"), jvm.err)
+    val e =
+      Processes.run(nobody ++ Seq(launcher.toString, "-x", "160", "-i", "basics.xml", "n.png"), d)
+    assertEquals(e, Processes.Exit(0, "", ""))
+    assertEquals(
+      Files.readAllBytes(d.resolve("n.png")).take(4).toSeq,
+      Seq(0x89, 'P', 'N', 'G').map(_.toByte)
+    )
