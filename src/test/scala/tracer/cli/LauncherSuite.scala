@@ -369,25 +369,33 @@ class LauncherSuite extends munit.FunSuite with Images:
         new com.sun.security.auth.module.UnixSystem().getUid == 0,
       "needs root and setpriv(1) to run the launcher as nobody"
     )
-    Files.setPosixFilePermissions(
-      d,
-      PosixFilePermissions.fromString("rwxrwxrwx")
-    )
     val nobody = Seq("/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups")
     // The warning the JVM gives such a user, which the launcher must know to drop.
-    val jvm = Processes.run(
-      nobody ++ Seq(
-        Path.of(System.getProperty("java.home"), "bin", "java").toString,
-        "-XX:ThreadPriorityPolicy=1",
-        "-version"
-      ),
-      d
-    )
+    val javaBin = Path.of(System.getProperty("java.home"), "bin", "java").toString
+    val jvm     = Processes.run(nobody ++ Seq(javaBin, "-XX:ThreadPriorityPolicy=1", "-version"), d)
     assert(jvm.err.contains("warning: -XX:ThreadPriorityPolicy=1 may require"), jvm.err)
-    val e =
-      Processes.run(nobody ++ Seq(launcher.toString, "-x", "160", "-i", "basics.xml", "n.png"), d)
-    assertEquals(e, Processes.Exit(0, "", ""))
-    assertEquals(
-      Files.readAllBytes(d.resolve("n.png")).take(4).toSeq,
-      Seq(0x89, 'P', 'N', 'G').map(_.toByte)
-    )
+    // A copy of the launcher and its jar that nobody may read (the checkout may be private), run
+    // without a start-up cache (whose training is not what this test is about), writing into a
+    // directory nobody may write.
+    val open = PosixFilePermissions.fromString("rwxr-xr-x")
+    val copy = Files.createTempDirectory("tracer-public")
+    try
+      for name <- List("tracer", "launcher/launcher.sh", "target/scala-3.8.3/tracer.jar") do
+        val to = copy.resolve(name)
+        Files.createDirectories(to.getParent)
+        Files.copy(home.resolve(name), to)
+      Files
+        .walk(copy)
+        .forEach(p => if Files.isDirectory(p) then Files.setPosixFilePermissions(p, open): Unit)
+      Files.setPosixFilePermissions(d, PosixFilePermissions.fromString("rwxrwxrwx"))
+      val run = Processes.run(
+        nobody ++ Seq(copy.resolve("tracer").toString, "-x", "160", "-i", "basics.xml", "n.png"),
+        d,
+        Map("TRACER_CACHE" -> Some("off"))
+      )
+      assertEquals(run, Processes.Exit(0, "", ""))
+      assertEquals(
+        Files.readAllBytes(d.resolve("n.png")).take(4).toSeq,
+        Seq(0x89, 'P', 'N', 'G').map(_.toByte)
+      )
+    finally Files.walk(copy).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
