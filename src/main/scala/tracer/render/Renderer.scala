@@ -272,8 +272,9 @@ object Renderer:
       * Perf: a Java priority reaches the operating system only where the JVM maps it
       * (`-XX:ThreadPriorityPolicy=1` on Linux, which the launcher passes with the lowest
       * priority mapped to nice 4 and none above nice 0); elsewhere this changes nothing. Whole
-      * runs alternating with and without it: the gallery's solids 1399 → 1321 ms, the showcase
-      * 393 → 354, 720p mesh-20000 898 → 877, mesh-80000 even (docs/performance.md, round 30).
+      * runs alternating with the commit before: the gallery's showcase 389 → 344 ms, solids 1332
+      * → 1287, 720p mesh-20000 920 → 854, mesh-80000 within its noise (docs/performance.md,
+      * round 30).
       */
     def lowerForRows(): Unit =
       val thread = Thread.currentThread

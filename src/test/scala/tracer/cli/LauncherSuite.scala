@@ -114,15 +114,20 @@ class LauncherSuite extends munit.FunSuite with Images:
     * is un-niced (launcher.sh, tracer_java_flags); otherwise nothing.
     */
   private val priority: String =
-    val stat =
-      try Files.readString(Path.of("/proc/self/stat"), UTF_8)
-      catch case _: java.io.IOException => ""
-    val fields = stat.substring(stat.lastIndexOf(") ") + 2).split(' ')
+    val fields =
+      try statFields(Files.readString(Path.of("/proc/self/stat"), UTF_8))
+      catch case _: java.io.IOException => Array.empty[String]
     if fields.length > 16 && fields(16) == "0" then
       "-XX:ThreadPriorityPolicy=1 -XX:JavaPriority1_To_OSPriority=4 " +
         (6 to 10).map(p => s"-XX:JavaPriority${p}_To_OSPriority=0 ").mkString +
         "-XX:CompilerThreadPriority=0 -XX:VMThreadPriority=0 "
     else ""
+
+  /** The fields of a `/proc` `stat` line after the command's name (which is in parentheses and
+    * may hold spaces): the state at 0, the user-mode clock ticks at 11, the nice value at 16.
+    */
+  private def statFields(stat: String): Array[String] =
+    stat.substring(stat.lastIndexOf(") ") + 2).split(' ')
 
   work.test(
     "it takes the newest Java >= 17 of JAVA_HOME, PATH and the JDK directories, or TRACER_JAVA"
@@ -315,10 +320,8 @@ class LauncherSuite extends munit.FunSuite with Images:
       catch case _: java.io.IOException => Nil
     tasks.flatMap { task =>
       try
-        val comm = Files.readString(task.resolve("comm"), UTF_8).trim
-        val stat = Files.readString(task.resolve("stat"), UTF_8)
-        // The fields after the name: state, 10 more, user time (11), …, nice (16).
-        val fields = stat.substring(stat.lastIndexOf(") ") + 2).split(' ')
+        val comm   = Files.readString(task.resolve("comm"), UTF_8).trim
+        val fields = statFields(Files.readString(task.resolve("stat"), UTF_8))
         if comm.startsWith(name) then Some((fields(16).toInt, fields(11).toLong)) else None
       catch case _: java.io.IOException | _: NumberFormatException => None
     }
