@@ -59,6 +59,7 @@ class StartupCacheSuite extends munit.FunSuite:
         "-Xss8m",
         "-XX:+UseSerialGC",
         "-XX:LoopUnrollLimit=1",
+        "-XX:Tier2BackedgeNotifyFreqLog=20",
         "-Dtracer.exit=halt",
         s"-Xlog:class+load=info:file=$log",
         "-jar",
