@@ -12,7 +12,7 @@
 #                     when unset the launcher chooses (tracer_choose_java)
 #   TRACER_JAVA_OPTS  the JVM's options, replacing the default
 #                     "-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1
-#                     -XX:Tier2BackedgeNotifyFreqLog=20" (and the default's quick
+#                     -XX:Tier2BackedgeNotifyFreqLog=30" (and the default's quick
 #                     end: -Dtracer.exit=halt)
 #   TRACER_CACHE      "off": no start-up cache; "cds": an AppCDS archive even on JDK 25 or newer
 #                     (for comparisons); anything else (or unset): the cache below
@@ -364,15 +364,16 @@ tracer_launch() {
   # handful of times a call (a node's four children, a combination's parts), unrolling them buys
   # nothing in the compiled code and costs compile time on the one C2 thread of a small machine,
   # while the render waits in slower code (round 16: the gallery's solids 7% and 1280x720 few 16%
-  # sooner, steady state and 4K unchanged); and no compilation on stack of a loop in code that C1
-  # compiled from the start-up cache's profiles (tier 2) before a million turns: the render's
-  # hot methods run short loops millions of times, so the count of their turns, checked every
-  # 16,384 by default, asked C2 for a version entered in the middle of the loop (about 20 in a
+  # sooner, steady state and 4K unchanged); and no compilation on stack of a loop in the code
+  # that C1 compiles from the start-up cache's profiles (tier 2; its loops' turns are counted
+  # against 2^30, not 2^14): the render's hot methods run short loops millions of times, so the
+  # count of their turns asked C2 for a version entered in the middle of the loop (about 20 in a
   # run of the solids, 0.19 s of the one C2 thread) just before the ordinary version that makes
-  # it useless (round 31: the solids, the showcase and the 720p meshes 4-9% sooner; the loops
-  # of a large mesh's build run in C1's profiling code, tier 3, and keep the default).
+  # it useless (round 31: the solids, the showcase and the 720p meshes 5-10% sooner). A long
+  # loop of such a method runs in C1's code until the method is called again; the loops of a
+  # large mesh's build run in C1's profiling code (tier 3) and keep their on-stack versions.
   # TRACER_JAVA_OPTS replaces them.
-  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=20}"
+  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30}"
   # With its own options the JVM halts at the end instead of exiting (tracer.cli.Main.main): an
   # exit first loads the JDK's logging for one debug message, 15-20 ms of every run. Options of the
   # user's may start a flight recording or an agent whose shutdown hooks must run: no halt then.

@@ -91,7 +91,7 @@ object ManPage:
     ".TP",
     ".B TRACER_JAVA_OPTS",
     "The JVM's options, replacing the default \\-Xss8m \\-XX:+UseSerialGC \\-XX:LoopUnrollLimit=1",
-    "\\-XX:Tier2BackedgeNotifyFreqLog=20 \\-Dtracer.exit=halt (the last ends the JVM without",
+    "\\-XX:Tier2BackedgeNotifyFreqLog=30 \\-Dtracer.exit=halt (the last ends the JVM without",
     "running shutdown hooks).",
     ".TP",
     ".B TRACER_CACHE",

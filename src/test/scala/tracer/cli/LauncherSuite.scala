@@ -151,11 +151,11 @@ class LauncherSuite extends munit.FunSuite with Images:
     // JDK 23 and newer are told to let Scala's LazyVals use sun.misc.Unsafe without a warning.
     assertEquals(
       chosen(),
-      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=20 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-25.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JDK_DIRS" -> Some(d.resolve("none").toString)),
-      s"jdk-19.0.1 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=20 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-19.0.1 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30 -Dtracer.exit=halt -jar $jar --version"
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.toString), "TRACER_JAVA_OPTS" -> Some("-Xmx1g")),
@@ -163,7 +163,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     )
     assertEquals(
       chosen("TRACER_JAVA" -> Some(old.resolve("bin/java").toString)),
-      s"jdk-11.0.2 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=20 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-11.0.2 $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("a JDK whose path has a newline does not lend its neighbours the wrong home"): d =>
@@ -183,7 +183,7 @@ class LauncherSuite extends munit.FunSuite with Images:
     assertEquals((e.status, e.err), (0, ""))
     assertEquals(
       e.out.trim,
-      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=20 -Dtracer.exit=halt -jar $jar --version"
+      s"jdk-99.0.1 --sun-misc-unsafe-memory-access=allow $priority-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30 -Dtracer.exit=halt -jar $jar --version"
     )
 
   work.test("no Java of 17 or newer, or a TRACER_JAVA that is none, is one line and exit 1"): d =>
