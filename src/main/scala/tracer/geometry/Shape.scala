@@ -533,7 +533,7 @@ final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends S
   /** Each child's bounds, widened a little, six doubles a child (low corner, high corner; ±∞ for
     * an unbounded child): the kernel skips a child whose box a ray misses (Kernel.reach).
     */
-  private[geometry] val partBoxes: Array[Double] = Kernel.paddedBoxes(parts)
+  private[geometry] val partBoxes: Array[Double] = CsgKernel.paddedBoxes(parts)
 
 /** The total functions on shapes: intersection distance, hit details and texture coordinates. */
 object Shape:
