@@ -365,11 +365,11 @@ tracer_launch() {
   # nothing in the compiled code and costs compile time on the one C2 thread of a small machine,
   # while the render waits in slower code (round 16: the gallery's solids 7% and 1280x720 few 16%
   # sooner, steady state and 4K unchanged); and no compilation on stack of a loop in the code
-  # that C1 compiles from the start-up cache's profiles (tier 2; its loops' turns are counted
-  # against 2^30, not 2^14): the render's hot methods run short loops millions of times, so the
-  # count of their turns asked C2 for a version entered in the middle of the loop (about 20 in a
-  # run of the solids, 0.19 s of the one C2 thread) just before the ordinary version that makes
-  # it useless (round 31: the solids, the showcase and the 720p meshes 5-10% sooner). A long
+  # that C1 compiles from the start-up cache's profiles (tier 2; the count of its loops' turns is
+  # checked every 2^30 turns, not every 2^14): the render's hot methods run short loops millions
+  # of times, so that count asked C2 for a version entered in the middle of the loop (about 20 in
+  # a run of the solids, 0.19 s of the one C2 thread) just before the ordinary version that makes
+  # it useless (round 31: the solids, the showcase and the 720p meshes 5-11% sooner). A long
   # loop of such a method runs in C1's code until the method is called again; the loops of a
   # large mesh's build run in C1's profiling code (tier 3) and keep their on-stack versions.
   # TRACER_JAVA_OPTS replaces them.
