@@ -30,6 +30,10 @@ readonly tracer_min_java=17
 # of about 15 s instead of 6 (docs/performance.md, round 13). Part of the cache's name.
 readonly tracer_training_width=960
 
+# The JVM's options when TRACER_JAVA_OPTS is unset (tracer_launch says why each); scripts/ab.sh
+# and scripts/startup-bench.sh read them from here.
+readonly tracer_default_jvm='-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30'
+
 # tracer_release_version HOME: prints JAVA_VERSION from the JDK's HOME/release file (e.g. 25.0.3),
 # or fails when there is none. Reads the file in the shell: no process is started.
 tracer_release_version() {
@@ -149,10 +153,10 @@ tracer_java_flags() {
     # stay at nice 0, so while the JIT compiles the render's code on a machine whose processors
     # the rows fill, its threads come first and the compiled code arrives sooner (whole runs:
     # the gallery's showcase 389 -> 344 ms, solids 1332 -> 1287, 720p mesh-20000 920 -> 854;
-    # docs/performance.md, round 30). Only when not niced: the JVM sets these values, not offsets, so a niced run
-    # keeps its own niceness everywhere instead. A user other than root may lower a priority but
-    # not raise one, which is all this asks; the JVM still warns such a user on its standard
-    # error, and tracer_launch drops that line (tracer_unwarn).
+    # docs/performance.md, round 30). Only when not niced: the JVM sets these values, not
+    # offsets, so a niced run keeps its own niceness everywhere instead. A user other than root
+    # may lower a priority but not raise one, which is all this asks; the JVM still warns such a
+    # user on its standard error, and tracer_launch drops that line (tracer_unwarn).
     tracer_priority=true
     tracer_flags+=(-XX:ThreadPriorityPolicy=1 -XX:JavaPriority1_To_OSPriority=4
       -XX:JavaPriority6_To_OSPriority=0 -XX:JavaPriority7_To_OSPriority=0
@@ -373,7 +377,7 @@ tracer_launch() {
   # loop of such a method runs in C1's code until the method is called again; the loops of a
   # large mesh's build run in C1's profiling code (tier 3) and keep their on-stack versions.
   # TRACER_JAVA_OPTS replaces them.
-  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:--Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30}"
+  read -r -a tracer_jvm <<<"${TRACER_JAVA_OPTS:-$tracer_default_jvm}"
   # With its own options the JVM halts at the end instead of exiting (tracer.cli.Main.main): an
   # exit first loads the JDK's logging for one debug message, 15-20 ms of every run. Options of the
   # user's may start a flight recording or an agent whose shutdown hooks must run: no halt then.

@@ -9,8 +9,8 @@
 # warm-up and start-up are left out and what is compared is the compiled code. Prints one line
 # per jar: its Tracetime in ms, a figure per run (default 3 runs). TRACER-OPTIONS go to every
 # render (e.g. -x 1280 -y 720 -g srgb). The Java is $JAVA (default: java on PATH), started as
-# `java -Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30 -jar JAR`
-# (the launcher's options; with --sun-misc-unsafe-memory-access=allow on 23+).
+# `java OPTIONS -jar JAR`, OPTIONS the launcher's default (tracer_default_jvm in
+# launcher/launcher.sh; with --sun-misc-unsafe-memory-access=allow on 23+).
 # The pictures go to a temporary directory, removed at the end; with --keep DIR they go to DIR
 # (frame f of the i-th jar, from 0, as i-f.png), to compare the jars' pictures with cmp.
 set -euo pipefail
@@ -41,7 +41,10 @@ while [ $# -gt 0 ] && [ "$1" != -- ]; do jars+=("$1"); shift; done
 for jar in "${jars[@]}"; do [ -f "$jar" ] || { echo "ab.sh: no jar '$jar'" >&2; exit 1; }; done
 
 java=${JAVA:-java}
-flags=(-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30)
+# The launcher's default JVM options (sourcing it defines its functions and constants, nothing runs).
+# shellcheck source=launcher/launcher.sh
+. "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/launcher/launcher.sh"
+read -r -a flags <<<"$tracer_default_jvm"
 if "$java" --sun-misc-unsafe-memory-access=allow -version >/dev/null 2>&1; then
   flags+=(--sun-misc-unsafe-memory-access=allow)
 fi

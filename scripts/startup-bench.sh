@@ -18,7 +18,7 @@
 #   25 aot+coh    the same with compact object headers (-XX:+UseCompactObjectHeaders)
 #
 # The caches are made in a scratch directory from the built jar; the JVM options are the
-# launcher's (-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30, and
+# launcher's default (tracer_default_jvm in launcher/launcher.sh, and
 # --sun-misc-unsafe-memory-access=allow on JDK 25).
 # JDK17 and JDK25 name the two Javas (defaults: the Debian and Temurin paths of this project's
 # machines). The scenes are tracer.demo.BenchScenes' (scenes/bench/, generated on first use, as
@@ -71,7 +71,9 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/startup-bench.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 jar="$work/tracer.jar"
 cp "$home/target/scala-3.8.3/tracer.jar" "$jar"
-jvm=(-Xss8m -XX:+UseSerialGC -XX:LoopUnrollLimit=1 -XX:Tier2BackedgeNotifyFreqLog=30)
+# shellcheck source=launcher/launcher.sh
+. "$home/launcher/launcher.sh"
+read -r -a jvm <<<"$tracer_default_jvm"
 unsafe=--sun-misc-unsafe-memory-access=allow
 quiet=(-Xlog:cds=off -Xlog:aot*=off)
 
