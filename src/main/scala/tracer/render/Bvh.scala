@@ -1,7 +1,7 @@
 package tracer.render
 
 import scala.concurrent.ExecutionContext
-import tracer.geometry.{Mesh, Shape}
+import tracer.geometry.{Mesh, Shape, Triangle}
 import tracer.math.Vec3
 
 /** A bounding volume hierarchy over the bounded shapes of a scene, built once with the binned
@@ -234,10 +234,11 @@ final class Bvh(
     * mesh, and each face of each mesh, with its box widened by 10⁻⁷ of its size.
     */
   def bufferItems: BufferItems =
-    val n     = itemCount.toInt
-    val boxes = new Array[Double](6 * n)
-    val owner = new Array[Int](n)
-    val face  = new Array[Int](n)
+    val n       = itemCount.toInt
+    val boxes   = new Array[Double](6 * n)
+    val owner   = new Array[Int](n)
+    val face    = new Array[Int](n)
+    val corners = new Array[Double](9 * n)
     // Why: the next item's number.
     var i = 0
     for k <- 0 until prims.size do
@@ -245,20 +246,28 @@ final class Bvh(
         val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
         for f <- 0 until mesh.faceCount do
           mesh.faceBox(f, boxes, 6 * i)
+          mesh.faceCorners(f, corners, 9 * i)
           owner(i) = k; face(i) = f
           i += 1
       else
         // The tree holds only bounded shapes; a box without bounds would be tested on every ray.
         val inf      = Double.PositiveInfinity
+        val shape    = prims.all(prims.index(k))
         val (lo, hi) = Shape
-          .bounds(prims.all(prims.index(k)))
+          .bounds(shape)
           .fold((Vec3(-inf, -inf, -inf), Vec3(inf, inf, inf)))(b => (b.lo, b.hi))
         boxes(6 * i) = lo.x; boxes(6 * i + 1) = lo.y; boxes(6 * i + 2) = lo.z
         boxes(6 * i + 3) = hi.x; boxes(6 * i + 4) = hi.y; boxes(6 * i + 5) = hi.z
+        shape match
+          case t: Triangle =>
+            for (c, j) <- Seq(t.t0, t.t1, t.t2).zipWithIndex do
+              corners(9 * i + 3 * j) = c.x; corners(9 * i + 3 * j + 1) = c.y
+              corners(9 * i + 3 * j + 2) = c.z
+          case _ => corners(9 * i) = Double.NaN
         owner(i) = k; face(i) = -1
         i += 1
     for j <- 0 until n do World.widen(boxes, 6 * j)
-    BufferItems(boxes, owner, face)
+    BufferItems(boxes, owner, face, corners)
 
   /** True when one of the items `list(from until to)` of light buffer `buffer` (built over
     * [[bufferItems]]) is met by the ray at a t below `limit` ([[itemBlocks]]); stops at the

@@ -3,8 +3,8 @@ package tracer.render
 /** A point light's light buffer (Haines and Greenberg, 1986): the directions around the light as
   * the six faces of a cube, the part of each face that the scene covers cut into cells, and in
   * each cell the items (a bounded shape, or one face of a mesh: [[BufferItems]]) whose boxes
-  * some direction of the cell meets, nearest the light first. Immutable after
-  * [[LightBuffer.build]].
+  * some direction of the cell meets (a triangle's own outline, when it lies on one face of the
+  * cube), nearest the light first. Immutable after [[LightBuffer.build]].
   *
   * A shadow ray from a point toward the light keeps one direction as seen from the light along
   * its whole length (each of its points lies on the line from the light back through the point),
@@ -17,7 +17,9 @@ package tracer.render
   * Why exact: an item's cells are those of its box widened by 10⁻⁷ of its size (as the tree's
   * float boxes are rounded outwards), its part of a face widened by [[LightBuffer.Slack]] in the
   * face's coordinates, and each face also takes the items whose points lie within a relative
-  * 10⁻⁶ of its edges. A ray's direction from the light differs from the true one by rounding,
+  * 10⁻⁶ of its edges. A triangle on one face keeps, of those cells, the ones its corners'
+  * outline on the face meets, widened by the same slack and the box's widening as seen from the
+  * light (`outline`, `column`). A ray's direction from the light differs from the true one by rounding,
   * about 6·10⁻¹⁶ (r / s + 1) for a ray of length r and a point at distance s from the light; the
   * items nearer the light than a ten-thousandth of the scene's size are tested on every ray, and
   * a ray longer than [[reachLimit]] takes the tree instead, so that error stays far below the
@@ -133,12 +135,15 @@ object LightBuffer:
       keys(i) = (java.lang.Float.floatToRawIntBits(gap).toLong << 32) | i
       i += 1
     java.util.Arrays.sort(keys)
+    val rel   = new Array[Double](6 * n)
+    val owner = new Array[Int](n)
+    val face  = new Array[Int](n)
+    val gaps  = new Array[Float](n)
+    // A triangle's corners relative to the light at 10i, and at 10i + 9 how far its box was
+    // widened (World.widen); NaN at 10i for an item that is not a triangle.
+    val corners = new Array[Double](10 * n)
     // Perf: as above. The sorted boxes relative to the light, and the scene's size seen from
     // it: the farthest finite box corner.
-    val rel    = new Array[Double](6 * n)
-    val owner  = new Array[Int](n)
-    val face   = new Array[Int](n)
-    val gaps   = new Array[Float](n)
     var extent = 0.0
     i = 0
     while i < n do
@@ -154,9 +159,36 @@ object LightBuffer:
         val e = Math.abs(d)
         if e > extent && e < Double.PositiveInfinity then extent = e
         j += 1
+      relativeCorners(items.corners, from, lx, ly, lz, corners, i)
       i += 1
     if !(extent > 0) then None
-    else Some(binned(rel, n, 1e-4 * extent, owner, face, gaps))
+    else Some(binned(rel, corners, n, 1e-4 * extent, owner, face, gaps))
+
+  /** Writes item `from`'s corners (from `absolute`, at 9 an item) relative to the light into
+    * `corners` at 10i, and how far its box was widened at 10i + 9; NaN at 10i for an item that
+    * is not a triangle.
+    */
+  private def relativeCorners(
+      absolute: Array[Double],
+      from: Int,
+      lx: Double,
+      ly: Double,
+      lz: Double,
+      corners: Array[Double],
+      i: Int
+  ): Unit =
+    if absolute.isEmpty || absolute(9 * from).isNaN then corners(10 * i) = Double.NaN
+    else
+      // Perf: as build, a call an item.
+      var largest = 0.0
+      var j       = 0
+      while j < 9 do
+        val x = absolute(9 * from + j)
+        largest = Math.max(largest, Math.abs(x))
+        corners(10 * i + j) = x - (if j % 3 == 0 then lx else if j % 3 == 1 then ly else lz)
+        j += 1
+      // World.widen's margin, from the same largest coordinate (the box's, before widening).
+      corners(10 * i + 9) = 1e-7 * (1 + largest)
 
   /** The distance from (cx, cy, cz) to the box at `at` of `boxes`, as a float no greater than it
     * (0 for a box that holds the point or is not finite: every ray tests it first).
@@ -186,6 +218,7 @@ object LightBuffer:
     */
   private def binned(
       rel: Array[Double],
+      corners: Array[Double],
       n: Int,
       near: Double,
       owner: Array[Int],
@@ -196,6 +229,9 @@ object LightBuffer:
     // face only, as most do; else OnNone, OnSeveral or OnAlways.
     val on    = new Array[Byte](n)
     val parts = new Array[Double](4 * n)
+    // A triangle on one face: its corners' (u, v) at 7i, and its margin at 7i + 6 ([[outline]]);
+    // NaN at 7i for any other item, binned by its box's part alone.
+    val outlines = new Array[Double](7 * n)
     // Perf: as build; an item's one part is found once, not in each of the three passes. Each
     // pass's work on one item is a small method of its own, called once an item: a method is
     // compiled after a few hundred calls, where these loops written out in one method of 6.8 KB
@@ -204,6 +240,7 @@ object LightBuffer:
     var i = 0
     while i < n do
       classify(rel, gaps, i, near, on, parts)
+      outline(corners, on, i, parts, outlines)
       i += 1
     val (windows, highs, sizes) = grids(rel, n, on, parts)
     val cells                   = sizes(18)
@@ -214,7 +251,7 @@ object LightBuffer:
     val start = new Array[Int](cells + 1)
     i = 0
     while i < n do
-      count(rel, on, parts, i, windows, sizes, widest, start)
+      count(rel, on, parts, outlines, i, windows, sizes, widest, start)
       i += 1
     var c = 0
     while c < cells do
@@ -226,7 +263,7 @@ object LightBuffer:
     i = 0
     while i < n do
       if on(i) == OnAlways then always += 1
-      else place(rel, on, parts, i, windows, sizes, items, next)
+      else place(rel, on, parts, outlines, i, windows, sizes, items, next)
       i += 1
     val everyRay = new Array[Int](always)
     always = 0
@@ -268,6 +305,125 @@ object LightBuffer:
         f += 1
       if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
 
+  /** For a triangle on one face (`on(i)`), writes its corners' (u, v) on that face at 7i of
+    * `outlines` and its margin at 7i + 6, and narrows its part to them; else NaN at 7i.
+    *
+    * Why exact: a point seen from the light at (x, y, z) relative to it, with a > 0 its coordinate
+    * along the face's axis, lies at (y / a, z / a) on the face (for the face's own two axes), so
+    * the triangle's points lie in the triangle of its corners' (u, v): central projection keeps
+    * straight lines straight. The margin takes [[Slack]] for the ray's rounding and, for the
+    * points the face test may accept up to the box's widening δ off the triangle, 3δ / a over the
+    * least a of the corners (a shift δ moves u by at most δ (1 + |u|) / (a − δ), and a ≥ 10δ).
+    */
+  private def outline(
+      corners: Array[Double],
+      on: Array[Byte],
+      i: Int,
+      parts: Array[Double],
+      outlines: Array[Double]
+  ): Unit =
+    outlines(7 * i) = Double.NaN
+    val f = on(i)
+    if f >= 0 && !corners(10 * i).isNaN then
+      val a     = f >> 1
+      val b     = (a + 1) % 3
+      val c     = (a + 2) % 3
+      val sign  = if (f & 1) == 1 then -1.0 else 1.0
+      val delta = corners(10 * i + 9)
+      val a0    = sign * corners(10 * i + a)
+      val a1    = sign * corners(10 * i + 3 + a)
+      val a2    = sign * corners(10 * i + 6 + a)
+      val least = Math.min(a0, Math.min(a1, a2))
+      if least > 10 * delta then
+        val m     = Slack + 3 * delta / least
+        val u0    = corners(10 * i + b) / a0; val v0     = corners(10 * i + c) / a0
+        val u1    = corners(10 * i + 3 + b) / a1; val v1 = corners(10 * i + 3 + c) / a1
+        val u2    = corners(10 * i + 6 + b) / a2; val v2 = corners(10 * i + 6 + c) / a2
+        val uLow  = Math.max(parts(4 * i), Math.min(u0, Math.min(u1, u2)) - m)
+        val uHigh = Math.min(parts(4 * i + 1), Math.max(u0, Math.max(u1, u2)) + m)
+        val vLow  = Math.max(parts(4 * i + 2), Math.min(v0, Math.min(v1, v2)) - m)
+        val vHigh = Math.min(parts(4 * i + 3), Math.max(v0, Math.max(v1, v2)) + m)
+        // Both parts hold every direction that matters, so their overlap does; it is empty only
+        // by rounding, and then the box's part stands alone.
+        if uLow <= uHigh && vLow <= vHigh then
+          parts(4 * i) = uLow; parts(4 * i + 1) = uHigh
+          parts(4 * i + 2) = vLow; parts(4 * i + 3) = vHigh
+          outlines(7 * i) = u0; outlines(7 * i + 1) = v0
+          outlines(7 * i + 2) = u1; outlines(7 * i + 3) = v1
+          outlines(7 * i + 4) = u2; outlines(7 * i + 5) = v2
+          outlines(7 * i + 6) = m
+
+  /** The cells along v, from `cv0` to `cv1`, that item `i`'s triangle (its outline, widened by
+    * its margin) may meet in column `cu` of face `f`: the first in the high 32 bits, the last in
+    * the low (none when the first is greater); all of them for an item without an outline.
+    *
+    * Why exact: the triangle's part within the column's strip of u (widened by the margin) is a
+    * convex polygon whose corners are the triangle's corners inside the strip and the points
+    * where its edges cross the strip's two sides, so its v lies between their least and
+    * greatest. A crossing's v is computed to within about 4·10⁻¹⁵ (coordinates below 2 in size);
+    * the range is widened by the margin and 10⁻¹³, and its cells are found by the lookup's own
+    * arithmetic ([[index]]).
+    *
+    * Perf: a range a column, not a test a cell: the three edges' test on each cell of the part
+    * made the 1280×720 render of mesh-80000 slower as a whole (median 1110 → 1196 ms), this even
+    * (1018 → 1023; docs/performance.md, round 32).
+    */
+  private def column(
+      outlines: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int],
+      f: Int,
+      cu: Int,
+      cv0: Int,
+      cv1: Int
+  ): Long =
+    val o = 7 * i
+    if outlines(o).isNaN then span(cv0, cv1)
+    else
+      val m     = outlines(o + 6)
+      val nu    = sizes(3 * f)
+      val from  = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu) - m
+      val to    = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu + 1) + m
+      var least = Double.PositiveInfinity
+      var most  = Double.NegativeInfinity
+      var k     = 0
+      while k < 6 do
+        val u = outlines(o + k)
+        val v = outlines(o + k + 1)
+        if u >= from && u <= to then
+          least = Math.min(least, v); most = Math.max(most, v)
+        val n  = if k == 4 then 0 else k + 2
+        val un = outlines(o + n)
+        val vn = outlines(o + n + 1)
+        if u < from && un > from || u > from && un < from then
+          val w = crossing(u, v, un, vn, from)
+          least = Math.min(least, w); most = Math.max(most, w)
+        if u < to && un > to || u > to && un < to then
+          val w = crossing(u, v, un, vn, to)
+          least = Math.min(least, w); most = Math.max(most, w)
+        k += 2
+      if !(least <= most) then span(1, 0)
+      else
+        val nv = sizes(3 * f + 1)
+        val lo = index(least - m - 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
+        val hi = index(most + m + 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
+        span(Math.max(lo, cv0), Math.min(hi, cv1))
+
+  /** The v where the edge from (u, v) to (un, vn) crosses u = x (x strictly between u and un). */
+  private inline def crossing(u: Double, v: Double, un: Double, vn: Double, x: Double): Double =
+    v + (x - u) / (un - u) * (vn - v)
+
+  /** A range of cells, first and last, as [[column]] answers it. */
+  private inline def span(first: Int, last: Int): Long =
+    (first.toLong << 32) | (last.toLong & 0xffffffffL)
+
+  /** Where cell boundary `k` of a side lies (window from `low`, `scale` cells a unit, `n` cells):
+    * the first and last cells reach beyond the face (±2), as the lookup clamps to them.
+    */
+  private inline def cellEdge(low: Double, scale: Double, n: Int, k: Int): Double =
+    if k <= 0 then -2.0 else if k >= n then 2.0 else low + k / scale
+
   /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), or when it covers
     * more than `widest` cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray
     * or on no face is left alone.
@@ -276,6 +432,7 @@ object LightBuffer:
       rel: Array[Double],
       on: Array[Byte],
       parts: Array[Double],
+      outlines: Array[Double],
       i: Int,
       windows: Array[Double],
       sizes: Array[Int],
@@ -285,16 +442,17 @@ object LightBuffer:
     if on(i) != OnAlways && on(i) != OnNone then
       // Perf: as binned; the cells an item covers, summed, then each counted.
       var span = 0L
-      cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _) =>
+      cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _, _) =>
         span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
       )
       if span > widest then on(i) = OnAlways
       else
-        cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
+        cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
           var cu = cu0
           while cu <= cu1 do
-            var cv = cv0
-            while cv <= cv1 do
+            val cells = column(outlines, i, windows, sizes, f, cu, cv0, cv1)
+            var cv    = (cells >> 32).toInt
+            while cv <= cells.toInt do
               start(base + cu * nv + cv + 1) += 1
               cv += 1
             cu += 1
@@ -307,6 +465,7 @@ object LightBuffer:
       rel: Array[Double],
       on: Array[Byte],
       parts: Array[Double],
+      outlines: Array[Double],
       i: Int,
       windows: Array[Double],
       sizes: Array[Int],
@@ -314,12 +473,13 @@ object LightBuffer:
       next: Array[Int]
   ): Unit =
     if on(i) != OnNone then
-      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv) =>
+      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
         // Perf: as binned.
         var cu = cu0
         while cu <= cu1 do
-          var cv = cv0
-          while cv <= cv1 do
+          val cells = column(outlines, i, windows, sizes, f, cu, cv0, cv1)
+          var cv    = (cells >> 32).toInt
+          while cv <= cells.toInt do
             val cell = base + cu * nv + cv
             items(next(cell)) = i
             next(cell) += 1
@@ -397,7 +557,7 @@ object LightBuffer:
     }
 
   /** Runs `body` on each range of cells (u first, then v, inclusive) that item `i` covers, with
-    * the face's first cell and its cells along v.
+    * the face's first cell, its cells along v and the face.
     */
   private inline def cellsOf(
       rel: Array[Double],
@@ -406,7 +566,7 @@ object LightBuffer:
       i: Int,
       windows: Array[Double],
       sizes: Array[Int]
-  )(inline body: (Int, Int, Int, Int, Int, Int) => Unit): Unit =
+  )(inline body: (Int, Int, Int, Int, Int, Int, Int) => Unit): Unit =
     partsOf(rel, on, parts, i) { (f, u0, u1, v0, v1) =>
       val nu = sizes(3 * f)
       val nv = sizes(3 * f + 1)
@@ -416,7 +576,8 @@ object LightBuffer:
         index(v0, windows(4 * f + 1), windows(4 * f + 3), nv),
         index(v1, windows(4 * f + 1), windows(4 * f + 3), nv),
         sizes(3 * f + 2),
-        nv
+        nv,
+        f
       )
     }
 

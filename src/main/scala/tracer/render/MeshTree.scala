@@ -60,6 +60,15 @@ final class MeshTree(
       out(to + 3 + axis) = Math.max(a, Math.max(b, c))
       axis += 1
 
+  /** Writes leaf-order face `k`'s corners (x, y, z of each, in the face's order) into `out` from
+    * `to`.
+    */
+  private[render] def faceCorners(k: Int, out: Array[Double], to: Int): Unit =
+    var j = 0
+    while j < 9 do
+      out(to + j) = vertices(at(3 * k + j / 3) + j % 3)
+      j += 1
+
   /** True when leaf-order face `k` is met by the ray at a t below `limit`: the test of the face
     * that [[occludedBelow]] makes, on its own (for a [[LightBuffer]]'s cell).
     */

@@ -3,7 +3,7 @@ package tracer.render
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Box, Plane, Ray, Shape, Sphere}
+import tracer.geometry.{Box, Plane, Ray, Shape, Sphere, Triangle}
 import tracer.math.Vec3
 import tracer.scene.{Camera, Light, Scene, SceneObject, Surface}
 import tracer.testkit.Generators.unitVec
@@ -89,6 +89,55 @@ class LightBufferProperties extends ScalaCheckSuite:
     assert(buffer.isDefined)
     assert(buffer.get.cellCount > 1000, buffer.get.cellCount)
     assert(buffer.get.entryCount >= 2 * 30 * 30, buffer.get.entryCount)
+
+  test("a triangle is binned by its outline: slivers fill fewer cells than their boxes"):
+    // 400 slivers on the floor, each along the diagonal of its square, seen from above: a box
+    // covers its square of directions, a face only a strip along the diagonal.
+    val slivers = (0 until 400).map { i =>
+      val x = (i % 20) * 0.5 - 5
+      val z = (i / 20) * 0.5 - 5
+      Triangle(Vec3(x, 0, z), Vec3(x + 2.45, 0, z + 2.45), Vec3(x + 2.4, 0.01, z + 2.45))
+    }
+    val light                    = Vec3(0.3, 6, -0.2)
+    def items(outlined: Boolean) =
+      val boxes   = new Array[Double](6 * slivers.size)
+      val corners = new Array[Double](9 * slivers.size)
+      for (t, i) <- slivers.zipWithIndex do
+        val cs = Seq(t.t0, t.t1, t.t2)
+        for a <- 0 until 3 do
+          val xs = cs.map(c => Seq(c.x, c.y, c.z)(a))
+          boxes(6 * i + a) = xs.min; boxes(6 * i + 3 + a) = xs.max
+        World.widen(boxes, 6 * i)
+        for (c, j) <- cs.zipWithIndex do
+          corners(9 * i + 3 * j) = c.x; corners(9 * i + 3 * j + 1) = c.y
+          corners(9 * i + 3 * j + 2) = c.z
+        if !outlined then corners(9 * i) = Double.NaN
+      BufferItems(boxes, slivers.indices.toArray, Array.fill(slivers.size)(-1), corners)
+    val outlined = LightBuffer.build(light.x, light.y, light.z, items(true)).get
+    val boxed    = LightBuffer.build(light.x, light.y, light.z, items(false)).get
+    assert(2 * outlined.entryCount < boxed.entryCount, (outlined.entryCount, boxed.entryCount))
+    // And a world of them answers as its walk: from points under the floor, and from points
+    // whose rays pass through the slivers' edges and corners, where an outline drawn too tight
+    // would leave a face out of the ray's cell.
+    val w     = worldOf(slivers, Seq(light))
+    val query = w.newQuery()
+    val under = for i <- -120 to 120; j <- -120 to 120 yield Vec3(i / 24.0 + 1e-3, -0.02, j / 24.0)
+    val throughEdges =
+      for t <- slivers; (a, b) <- Seq(t.t0 -> t.t1, t.t1 -> t.t2, t.t2 -> t.t0); k <- 0 to 4
+      yield light + (a + (b - a) * (k / 4.0) - light) * 1.5
+    val blocked = (under ++ throughEdges).count { p =>
+      val t     = light - p
+      val reach = t.length
+      val d     = t / reach
+      val walk  = walked(w, p, d, reach, query)
+      assertEquals(
+        w.occludedToward(w.lightBuffer(0).get, p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
+        walk,
+        s"from $p"
+      )
+      walk
+    }
+    assert(blocked > 6000, blocked)
 
   test("a world of a few shapes in one leaf gets a buffer too, answering as the walk"):
     val few =
