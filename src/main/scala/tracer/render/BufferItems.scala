@@ -8,7 +8,8 @@ package tracer.render
   * @param face   item i's face in its mesh's leaf order, or −1 for a primitive that is not a mesh
   * @param corners item i's corners at 9i (x, y, z of each) when it is a triangle (a mesh's face or
   *   a [[tracer.geometry.Triangle]]), else NaN there: a buffer bins a triangle by its own outline
-  *   rather than its box's
+  *   rather than its box's; empty for a buffer that bins every item by its box (a render of
+  *   fewer than [[LightBuffer.OutlineRaysPerItem]] rays an item)
   */
 final class BufferItems(
     private[render] val boxes: Array[Double],

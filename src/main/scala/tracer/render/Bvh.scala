@@ -231,14 +231,15 @@ final class Bvh(
     count
 
   /** Its primitives as [[BufferItems]] for the [[LightBuffer]]s and the [[EyeBuffer]]: each that is not a
-    * mesh, and each face of each mesh, with its box widened by 10⁻⁷ of its size.
+    * mesh, and each face of each mesh, with its box widened by 10⁻⁷ of its size, and with
+    * `outlines` each triangle's corners.
     */
-  def bufferItems: BufferItems =
+  def bufferItems(outlines: Boolean): BufferItems =
     val n       = itemCount.toInt
     val boxes   = new Array[Double](6 * n)
     val owner   = new Array[Int](n)
     val face    = new Array[Int](n)
-    val corners = new Array[Double](9 * n)
+    val corners = if outlines then new Array[Double](9 * n) else Array.emptyDoubleArray
     // Why: the next item's number.
     var i = 0
     for k <- 0 until prims.size do
@@ -246,7 +247,7 @@ final class Bvh(
         val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
         for f <- 0 until mesh.faceCount do
           mesh.faceBox(f, boxes, 6 * i)
-          mesh.faceCorners(f, corners, 9 * i)
+          if outlines then mesh.faceCorners(f, corners, 9 * i)
           owner(i) = k; face(i) = f
           i += 1
       else
@@ -259,11 +260,11 @@ final class Bvh(
         boxes(6 * i) = lo.x; boxes(6 * i + 1) = lo.y; boxes(6 * i + 2) = lo.z
         boxes(6 * i + 3) = hi.x; boxes(6 * i + 4) = hi.y; boxes(6 * i + 5) = hi.z
         shape match
-          case t: Triangle =>
+          case t: Triangle if outlines =>
             for (c, j) <- Seq(t.t0, t.t1, t.t2).zipWithIndex do
               corners(9 * i + 3 * j) = c.x; corners(9 * i + 3 * j + 1) = c.y
               corners(9 * i + 3 * j + 2) = c.z
-          case _ => corners(9 * i) = Double.NaN
+          case _ => if outlines then corners(9 * i) = Double.NaN
         owner(i) = k; face(i) = -1
         i += 1
     for j <- 0 until n do World.widen(boxes, 6 * j)

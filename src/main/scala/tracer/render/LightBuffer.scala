@@ -119,6 +119,17 @@ object LightBuffer:
     */
   val RaysPerItem: Long = 4
 
+  /** Rays a buffer's item must expect for the buffer to bin its triangles by their outlines
+    * rather than their boxes' parts ([[BufferItems.corners]]): an outline costs more to bin and
+    * saves tests on every ray of its cells.
+    *
+    * Measured (docs/performance.md, round 32): 415 rays an item (3840×2160, mesh-20000) gained 5%
+    * of the whole run, 11.5 (1280×720, mesh-80000) came out even or 3% ahead, and 6.4
+    * (3840×2160, the 1.3M-face mesh, whose build is most of its run) lost: its buffers took 1,133
+    * samples to build by boxes and 1,615 by outlines, for 256 saved in the rows.
+    */
+  val OutlineRaysPerItem: Long = 8
+
   /** The buffer of the light at (lx, ly, lz) over `items`, or None when it has nothing to bin. */
   def build(lx: Double, ly: Double, lz: Double, items: BufferItems): Option[LightBuffer] =
     val n = items.size
@@ -140,8 +151,10 @@ object LightBuffer:
     val face  = new Array[Int](n)
     val gaps  = new Array[Float](n)
     // A triangle's corners relative to the light at 10i, and at 10i + 9 how far its box was
-    // widened (World.widen); NaN at 10i for an item that is not a triangle.
-    val corners = new Array[Double](10 * n)
+    // widened (World.widen); NaN at 10i for an item that is not a triangle (none at all for
+    // items without corners).
+    val corners =
+      if items.corners.isEmpty then Array.emptyDoubleArray else new Array[Double](10 * n)
     // Perf: as above. The sorted boxes relative to the light, and the scene's size seen from
     // it: the farthest finite box corner.
     var extent = 0.0
@@ -159,7 +172,7 @@ object LightBuffer:
         val e = Math.abs(d)
         if e > extent && e < Double.PositiveInfinity then extent = e
         j += 1
-      relativeCorners(items.corners, from, lx, ly, lz, corners, i)
+      if corners.nonEmpty then relativeCorners(items.corners, from, lx, ly, lz, corners, i)
       i += 1
     if !(extent > 0) then None
     else Some(binned(rel, corners, n, 1e-4 * extent, owner, face, gaps))
@@ -177,7 +190,7 @@ object LightBuffer:
       corners: Array[Double],
       i: Int
   ): Unit =
-    if absolute.isEmpty || absolute(9 * from).isNaN then corners(10 * i) = Double.NaN
+    if absolute(9 * from).isNaN then corners(10 * i) = Double.NaN
     else
       // Perf: as build, a call an item.
       var largest = 0.0
@@ -230,8 +243,8 @@ object LightBuffer:
     val on    = new Array[Byte](n)
     val parts = new Array[Double](4 * n)
     // A triangle on one face: its corners' (u, v) at 7i, and its margin at 7i + 6 ([[outline]]);
-    // NaN at 7i for any other item, binned by its box's part alone.
-    val outlines = new Array[Double](7 * n)
+    // NaN at 7i for any other item, binned by its box's part alone (none at all without corners).
+    val outlines = if corners.isEmpty then Array.emptyDoubleArray else new Array[Double](7 * n)
     // Perf: as build; an item's one part is found once, not in each of the three passes. Each
     // pass's work on one item is a small method of its own, called once an item: a method is
     // compiled after a few hundred calls, where these loops written out in one method of 6.8 KB
@@ -240,7 +253,7 @@ object LightBuffer:
     var i = 0
     while i < n do
       classify(rel, gaps, i, near, on, parts)
-      outline(corners, on, i, parts, outlines)
+      if outlines.nonEmpty then outline(corners, on, i, parts, outlines)
       i += 1
     val (windows, highs, sizes) = grids(rel, n, on, parts)
     val cells                   = sizes(18)
@@ -353,6 +366,20 @@ object LightBuffer:
           outlines(7 * i + 4) = u2; outlines(7 * i + 5) = v2
           outlines(7 * i + 6) = m
 
+  /** [[column]] for an outlined item `i`, else all of `cv0` to `cv1`, without a call. */
+  private inline def cellsAlong(
+      outlines: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int],
+      f: Int,
+      cu: Int,
+      cv0: Int,
+      cv1: Int
+  ): Long =
+    if outlines.isEmpty || outlines(7 * i).isNaN then span(cv0, cv1)
+    else column(outlines, i, windows, sizes, f, cu, cv0, cv1)
+
   /** The cells along v, from `cv0` to `cv1`, that item `i`'s triangle (its outline, widened by
     * its margin) may meet in column `cu` of face `f`: the first in the high 32 bits, the last in
     * the low (none when the first is greater); all of them for an item without an outline.
@@ -450,7 +477,7 @@ object LightBuffer:
         cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
           var cu = cu0
           while cu <= cu1 do
-            val cells = column(outlines, i, windows, sizes, f, cu, cv0, cv1)
+            val cells = cellsAlong(outlines, i, windows, sizes, f, cu, cv0, cv1)
             var cv    = (cells >> 32).toInt
             while cv <= cells.toInt do
               start(base + cu * nv + cv + 1) += 1
@@ -477,7 +504,7 @@ object LightBuffer:
         // Perf: as binned.
         var cu = cu0
         while cu <= cu1 do
-          val cells = column(outlines, i, windows, sizes, f, cu, cv0, cv1)
+          val cells = cellsAlong(outlines, i, windows, sizes, f, cu, cv0, cv1)
           var cv    = (cells >> 32).toInt
           while cv <= cells.toInt do
             val cell = base + cu * nv + cv

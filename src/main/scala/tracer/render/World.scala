@@ -140,7 +140,11 @@ final class World(
   private val shadowUnbounded: Primitives = if transmits then opaqueUnbounded else unbounded
   private val buffered                    = (!transmits || clearWalks) &&
     lights.exists(_.area.isEmpty) && shadowRays >= LightBuffer.RaysPerItem * shadowTree.itemCount
-  private val items: BufferItems = if buffered then shadowTree.bufferItems else BufferItems.empty
+  // Perf: triangles binned by their outlines when enough rays will ask each item (round 32).
+  private val outlinedLights =
+    shadowRays >= LightBuffer.OutlineRaysPerItem * shadowTree.itemCount
+  private val items: BufferItems =
+    if buffered then shadowTree.bufferItems(outlinedLights) else BufferItems.empty
 
   // Perf: rays from the camera, and those a mirroring plane reflects from it, look up their cell
   // of a buffer around the camera (or its mirror image) and test a few items, nearest first,
@@ -163,7 +167,11 @@ final class World(
     def build(l: Light) =
       if !buffered || l.area.isDefined then None
       else LightBuffer.build(l.location.x, l.location.y, l.location.z, items)
-    lazy val every      = if buffered && (shadowTree eq bvh) then items else bvh.bufferItems
+    val outlinedEyes =
+      Math.max(eyeRays, mirrorRays) >= LightBuffer.OutlineRaysPerItem * bvh.itemCount
+    lazy val every =
+      if buffered && (shadowTree eq bvh) && outlinedEyes == outlinedLights then items
+      else bvh.bufferItems(outlinedEyes)
     def around(c: Vec3) = EyeBuffer.build(c.x, c.y, c.z, every)
     pool match
       case Some(context) if centres.nonEmpty || buffered && lights.count(_.area.isEmpty) > 1 =>

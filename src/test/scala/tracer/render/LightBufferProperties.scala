@@ -90,7 +90,7 @@ class LightBufferProperties extends ScalaCheckSuite:
     assert(buffer.get.cellCount > 1000, buffer.get.cellCount)
     assert(buffer.get.entryCount >= 2 * 30 * 30, buffer.get.entryCount)
 
-  test("a triangle is binned by its outline: slivers fill fewer cells than their boxes"):
+  test("a triangle is binned by its outline in a long render: slivers fill fewer cells than boxes"):
     // 400 slivers on the floor, each along the diagonal of its square, seen from above: a box
     // covers its square of directions, a face only a strip along the diagonal.
     val slivers = (0 until 400).map { i =>
@@ -138,6 +138,26 @@ class LightBufferProperties extends ScalaCheckSuite:
       walk
     }
     assert(blocked > 6000, blocked)
+    // A render of fewer rays an item bins them by their boxes, and answers as the walk too.
+    val short = World(
+      Scene(
+        Camera(Vec3(0, 0, -20), Vec3.Zero),
+        lights = Vector(Light(light)),
+        objects = slivers.map(SceneObject(_)).toVector
+      ),
+      shadowRays = LightBuffer.RaysPerItem * slivers.size
+    )
+    val boxes = short.lightBuffer(0).get
+    assertEquals(boxes.entryCount, boxed.entryCount)
+    for p <- under do
+      val t     = light - p
+      val reach = t.length
+      val d     = t / reach
+      assertEquals(
+        short.occludedToward(boxes, p.x, p.y, p.z, d.x, d.y, d.z, reach, query),
+        walked(w, p, d, reach, query),
+        s"from $p, by boxes"
+      )
 
   test("a world of a few shapes in one leaf gets a buffer too, answering as the walk"):
     val few =
