@@ -45,6 +45,10 @@ private[render] final class Tree(
   * @param without the shapes left out for having no bounds, in order (see [[Tree.unbounded]])
   * @param whole  the most primitives a node holds that is made a leaf without weighing a split
   *   ([[BvhBuilder.wholeLeaf]])
+  * @param largest the most primitives a node holds that is made a leaf when splitting it would
+  *   cost more ([[BvhBuilder.MaxLeaf]], or [[BvhBuilder.MaxFaceLeaf]] for a mesh's faces)
+  * @param visit  what visiting a node costs, in tests of a primitive, in that weighing (0, or
+  *   [[BvhBuilder.FaceVisit]] for a mesh's faces)
   */
 private[render] final class BvhBuilder private (
     boxLo: Array[Float],
@@ -52,7 +56,9 @@ private[render] final class BvhBuilder private (
     centre: Array[Double],
     prims: Array[Int],
     without: Array[Int],
-    whole: Int
+    whole: Int,
+    largest: Int = BvhBuilder.MaxLeaf,
+    visit: Double = 0
 ):
   import BvhBuilder.*
 
@@ -191,7 +197,8 @@ private[render] final class BvhBuilder private (
       val nb = Math.min(Bins, n)
       binAll(start, end, axis, low, extent, nb, s)
       val best = cheapest(nb, s)
-      if n <= MaxLeaf && s.bestCost >= n * area(boxes, 6 * node, 6 * node + 3) then leaf()
+      val here = area(boxes, 6 * node, 6 * node + 3)
+      if n <= largest && s.bestCost + visit * here >= n * here then leaf()
       else
         // Bins 0..best to the left.
         val i      = partition(start, end, best)
@@ -425,7 +432,16 @@ private[render] object BvhBuilder:
     val boxHi  = new Array[Float](3 * n)
     val centre = new Array[Double](3 * n)
     inParts(n, pool)((from, to) => boxFaces(mesh, boxLo, boxHi, centre, from, to))
-    new BvhBuilder(boxLo, boxHi, centre, Array.range(0, n), Array.emptyIntArray, wholeLeaf(n, rays))
+    new BvhBuilder(
+      boxLo,
+      boxHi,
+      centre,
+      Array.range(0, n),
+      Array.emptyIntArray,
+      wholeLeaf(n, rays, MaxFaceLeaf),
+      MaxFaceLeaf,
+      FaceVisit
+    )
 
   /** Runs `part(from, to)` over consecutive ranges covering 0 until n: on `pool`, when one is
     * given and n is at least [[ParallelFrom]], in parts of [[Part]], and waits for them all; else
@@ -572,9 +588,24 @@ private[render] object BvhBuilder:
   /** The most shapes a leaf holds when splitting would cost more. */
   val MaxLeaf = 4
 
+  /** The most faces a mesh's leaf holds when splitting would cost more.
+    *
+    * Perf: with [[FaceVisit]], a mesh's tree has fewer, larger leaves where the faces are close
+    * together: fewer nodes to visit (each about 30 ns, more deep in a large tree, whose lower
+    * levels miss the caches) for more face tests, read in order. Whole runs (docs/performance.md,
+    * round 32): 1280×720 mesh-5000 614 → 578 ms, mesh-80000 991 → 965, 3840×2160 mesh-20000 2688
+    * → 2650. The scene's own tree keeps [[MaxLeaf]] and no visit cost: the gallery's solids, whose
+    * leaves hold costly shapes, ran 1170 → 1229 with them.
+    */
+  val MaxFaceLeaf = 8
+
+  /** What visiting a node of a mesh's tree costs, in face tests, when a split is weighed. */
+  val FaceVisit = 2.0
+
   /** The most primitives a node of a tree over `n` primitives holds that is made a leaf without
-    * weighing a split, when about `rays` rays will walk the tree: [[MaxLeaf]] / 2 when the rays
-    * are as many as the primitives or more, else about n / rays, up to [[CoarseLeaf]].
+    * weighing a split, when about `rays` rays will walk the tree and a leaf holds at most
+    * `largest` when a split is weighed: `largest` / 2 when the rays are as many as the primitives
+    * or more, else about n / rays, up to [[CoarseLeaf]].
     *
     * Perf: a tree's last levels are most of its build (every primitive binned once a level, and
     * seven in eight of its nodes), and they pay only when enough rays walk them: a picture of 8 × 8
@@ -582,8 +613,8 @@ private[render] object BvhBuilder:
     * made in 30% less time and 110 MB less memory (docs/performance.md, round 24). The answers
     * are the same whatever the leaves (`BvhProperties`).
     */
-  def wholeLeaf(n: Int, rays: Long): Int =
-    Math.max(MaxLeaf / 2, Math.min(CoarseLeaf.toLong, n / Math.max(1L, rays)).toInt)
+  def wholeLeaf(n: Int, rays: Long, largest: Int = MaxLeaf): Int =
+    Math.max(largest / 2, Math.min(CoarseLeaf.toLong, n / Math.max(1L, rays)).toInt)
 
   /** The largest leaf [[wholeLeaf]] makes for a short render of many primitives. */
   val CoarseLeaf = 64
