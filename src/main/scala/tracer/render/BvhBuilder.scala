@@ -593,8 +593,8 @@ private[render] object BvhBuilder:
     * Perf: with [[FaceVisit]], a mesh's tree has fewer, larger leaves where the faces are close
     * together: fewer nodes to visit (each about 30 ns, more deep in a large tree, whose lower
     * levels miss the caches) for more face tests, read in order. Whole runs (docs/performance.md,
-    * round 32): 1280×720 mesh-5000 614 → 578 ms, mesh-80000 991 → 965, 3840×2160 mesh-20000 2688
-    * → 2650. The scene's own tree keeps [[MaxLeaf]] and no visit cost: the gallery's solids, whose
+    * round 32): 1280×720 mesh-5000 631 → 611 ms, mesh-80000 1036 → 992, 3840×2160 mesh-20000 2816
+    * → 2773. The scene's own tree keeps [[MaxLeaf]] and no visit cost: the gallery's solids, whose
     * leaves hold costly shapes, ran 1170 → 1229 with them.
     */
   val MaxFaceLeaf = 8
