@@ -19,7 +19,7 @@ package tracer.render
   * face's coordinates, and each face also takes the items whose points lie within a relative
   * 10⁻⁶ of its edges. A triangle on one face keeps, of those cells, the ones its corners'
   * outline on the face meets, widened by the same slack and the box's widening as seen from the
-  * light (`outline`, `column`). A ray's direction from the light differs from the true one by rounding,
+  * light ([[Outlines]]). A ray's direction from the light differs from the true one by rounding,
   * about 6·10⁻¹⁶ (r / s + 1) for a ray of length r and a point at distance s from the light; the
   * items nearer the light than a ten-thousandth of the scene's size are tested on every ray, and
   * a ray longer than [[reachLimit]] takes the tree instead, so that error stays far below the
@@ -172,36 +172,10 @@ object LightBuffer:
         val e = Math.abs(d)
         if e > extent && e < Double.PositiveInfinity then extent = e
         j += 1
-      if corners.nonEmpty then relativeCorners(items.corners, from, lx, ly, lz, corners, i)
+      if corners.nonEmpty then Outlines.relativeCorners(items.corners, from, lx, ly, lz, corners, i)
       i += 1
     if !(extent > 0) then None
     else Some(binned(rel, corners, n, 1e-4 * extent, owner, face, gaps))
-
-  /** Writes item `from`'s corners (from `absolute`, at 9 an item) relative to the light into
-    * `corners` at 10i, and how far its box was widened at 10i + 9; NaN at 10i for an item that
-    * is not a triangle.
-    */
-  private def relativeCorners(
-      absolute: Array[Double],
-      from: Int,
-      lx: Double,
-      ly: Double,
-      lz: Double,
-      corners: Array[Double],
-      i: Int
-  ): Unit =
-    if absolute(9 * from).isNaN then corners(10 * i) = Double.NaN
-    else
-      // Perf: as build, a call an item.
-      var largest = 0.0
-      var j       = 0
-      while j < 9 do
-        val x = absolute(9 * from + j)
-        largest = Math.max(largest, Math.abs(x))
-        corners(10 * i + j) = x - (if j % 3 == 0 then lx else if j % 3 == 1 then ly else lz)
-        j += 1
-      // World.widen's margin, from the same largest coordinate (the box's, before widening).
-      corners(10 * i + 9) = 1e-7 * (1 + largest)
 
   /** The distance from (cx, cy, cz) to the box at `at` of `boxes`, as a float no greater than it
     * (0 for a box that holds the point or is not finite: every ray tests it first).
@@ -242,8 +216,9 @@ object LightBuffer:
     // face only, as most do; else OnNone, OnSeveral or OnAlways.
     val on    = new Array[Byte](n)
     val parts = new Array[Double](4 * n)
-    // A triangle on one face: its corners' (u, v) at 7i, and its margin at 7i + 6 ([[outline]]);
-    // NaN at 7i for any other item, binned by its box's part alone (none at all without corners).
+    // A triangle on one face: its corners' (u, v) at 7i, and its margin at 7i + 6
+    // (Outlines.outline); NaN at 7i for any other item, binned by its box's part alone (none at
+    // all without corners).
     val outlines = if corners.isEmpty then Array.emptyDoubleArray else new Array[Double](7 * n)
     // Perf: as build; an item's one part is found once, not in each of the three passes. Each
     // pass's work on one item is a small method of its own, called once an item: a method is
@@ -253,7 +228,7 @@ object LightBuffer:
     var i = 0
     while i < n do
       classify(rel, gaps, i, near, on, parts)
-      if outlines.nonEmpty then outline(corners, on, i, parts, outlines)
+      if outlines.nonEmpty then Outlines.outline(corners, on(i), i, parts, outlines)
       i += 1
     val (windows, highs, sizes) = grids(rel, n, on, parts)
     val cells                   = sizes(18)
@@ -318,55 +293,7 @@ object LightBuffer:
         f += 1
       if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
 
-  /** For a triangle on one face (`on(i)`), writes its corners' (u, v) on that face at 7i of
-    * `outlines` and its margin at 7i + 6, and narrows its part to them; else NaN at 7i.
-    *
-    * Why exact: a point seen from the light at (x, y, z) relative to it, with a > 0 its coordinate
-    * along the face's axis, lies at (y / a, z / a) on the face (for the face's own two axes), so
-    * the triangle's points lie in the triangle of its corners' (u, v): central projection keeps
-    * straight lines straight. The margin takes [[Slack]] for the ray's rounding and, for the
-    * points the face test may accept up to the box's widening δ off the triangle, 3δ / a over the
-    * least a of the corners (a shift δ moves u by at most δ (1 + |u|) / (a − δ), and a ≥ 10δ).
-    */
-  private def outline(
-      corners: Array[Double],
-      on: Array[Byte],
-      i: Int,
-      parts: Array[Double],
-      outlines: Array[Double]
-  ): Unit =
-    outlines(7 * i) = Double.NaN
-    val f = on(i)
-    if f >= 0 && !corners(10 * i).isNaN then
-      val a     = f >> 1
-      val b     = (a + 1) % 3
-      val c     = (a + 2) % 3
-      val sign  = if (f & 1) == 1 then -1.0 else 1.0
-      val delta = corners(10 * i + 9)
-      val a0    = sign * corners(10 * i + a)
-      val a1    = sign * corners(10 * i + 3 + a)
-      val a2    = sign * corners(10 * i + 6 + a)
-      val least = Math.min(a0, Math.min(a1, a2))
-      if least > 10 * delta then
-        val m     = Slack + 3 * delta / least
-        val u0    = corners(10 * i + b) / a0; val v0     = corners(10 * i + c) / a0
-        val u1    = corners(10 * i + 3 + b) / a1; val v1 = corners(10 * i + 3 + c) / a1
-        val u2    = corners(10 * i + 6 + b) / a2; val v2 = corners(10 * i + 6 + c) / a2
-        val uLow  = Math.max(parts(4 * i), Math.min(u0, Math.min(u1, u2)) - m)
-        val uHigh = Math.min(parts(4 * i + 1), Math.max(u0, Math.max(u1, u2)) + m)
-        val vLow  = Math.max(parts(4 * i + 2), Math.min(v0, Math.min(v1, v2)) - m)
-        val vHigh = Math.min(parts(4 * i + 3), Math.max(v0, Math.max(v1, v2)) + m)
-        // Both parts hold every direction that matters, so their overlap does; it is empty only
-        // by rounding, and then the box's part stands alone.
-        if uLow <= uHigh && vLow <= vHigh then
-          parts(4 * i) = uLow; parts(4 * i + 1) = uHigh
-          parts(4 * i + 2) = vLow; parts(4 * i + 3) = vHigh
-          outlines(7 * i) = u0; outlines(7 * i + 1) = v0
-          outlines(7 * i + 2) = u1; outlines(7 * i + 3) = v1
-          outlines(7 * i + 4) = u2; outlines(7 * i + 5) = v2
-          outlines(7 * i + 6) = m
-
-  /** [[column]] for an outlined item `i`, else all of `cv0` to `cv1`, without a call. */
+  /** [[Outlines.column]] for an outlined item `i`, else all of `cv0` to `cv1`, without a call. */
   private inline def cellsAlong(
       outlines: Array[Double],
       i: Int,
@@ -377,79 +304,8 @@ object LightBuffer:
       cv0: Int,
       cv1: Int
   ): Long =
-    if outlines.isEmpty || outlines(7 * i).isNaN then span(cv0, cv1)
-    else column(outlines, i, windows, sizes, f, cu, cv0, cv1)
-
-  /** The cells along v, from `cv0` to `cv1`, that item `i`'s triangle (its outline, widened by
-    * its margin) may meet in column `cu` of face `f`: the first in the high 32 bits, the last in
-    * the low (none when the first is greater); all of them for an item without an outline.
-    *
-    * Why exact: the triangle's part within the column's strip of u (widened by the margin) is a
-    * convex polygon whose corners are the triangle's corners inside the strip and the points
-    * where its edges cross the strip's two sides, so its v lies between their least and
-    * greatest. A crossing's v is computed to within about 4·10⁻¹⁵ (coordinates below 2 in size);
-    * the range is widened by the margin and 10⁻¹³, and its cells are found by the lookup's own
-    * arithmetic ([[index]]).
-    *
-    * Perf: a range a column, not a test a cell: the three edges' test on each cell of the part
-    * made the 1280×720 render of mesh-80000 slower as a whole (median 1110 → 1196 ms), this even
-    * (1018 → 1023; docs/performance.md, round 32).
-    */
-  private def column(
-      outlines: Array[Double],
-      i: Int,
-      windows: Array[Double],
-      sizes: Array[Int],
-      f: Int,
-      cu: Int,
-      cv0: Int,
-      cv1: Int
-  ): Long =
-    val o = 7 * i
-    if outlines(o).isNaN then span(cv0, cv1)
-    else
-      val m     = outlines(o + 6)
-      val nu    = sizes(3 * f)
-      val from  = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu) - m
-      val to    = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu + 1) + m
-      var least = Double.PositiveInfinity
-      var most  = Double.NegativeInfinity
-      var k     = 0
-      while k < 6 do
-        val u = outlines(o + k)
-        val v = outlines(o + k + 1)
-        if u >= from && u <= to then
-          least = Math.min(least, v); most = Math.max(most, v)
-        val n  = if k == 4 then 0 else k + 2
-        val un = outlines(o + n)
-        val vn = outlines(o + n + 1)
-        if u < from && un > from || u > from && un < from then
-          val w = crossing(u, v, un, vn, from)
-          least = Math.min(least, w); most = Math.max(most, w)
-        if u < to && un > to || u > to && un < to then
-          val w = crossing(u, v, un, vn, to)
-          least = Math.min(least, w); most = Math.max(most, w)
-        k += 2
-      if !(least <= most) then span(1, 0)
-      else
-        val nv = sizes(3 * f + 1)
-        val lo = index(least - m - 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
-        val hi = index(most + m + 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
-        span(Math.max(lo, cv0), Math.min(hi, cv1))
-
-  /** The v where the edge from (u, v) to (un, vn) crosses u = x (x strictly between u and un). */
-  private inline def crossing(u: Double, v: Double, un: Double, vn: Double, x: Double): Double =
-    v + (x - u) / (un - u) * (vn - v)
-
-  /** A range of cells, first and last, as [[column]] answers it. */
-  private inline def span(first: Int, last: Int): Long =
-    (first.toLong << 32) | (last.toLong & 0xffffffffL)
-
-  /** Where cell boundary `k` of a side lies (window from `low`, `scale` cells a unit, `n` cells):
-    * the first and last cells reach beyond the face (±2), as the lookup clamps to them.
-    */
-  private inline def cellEdge(low: Double, scale: Double, n: Int, k: Int): Double =
-    if k <= 0 then -2.0 else if k >= n then 2.0 else low + k / scale
+    if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
+    else Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1)
 
   /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), or when it covers
     * more than `widest` cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray
@@ -612,7 +468,7 @@ object LightBuffer:
     * cells), clamped to the window: the arithmetic of [[LightBuffer.cell]]'s lookup, which is
     * monotonic, so a coordinate between two others falls between their cells.
     */
-  private inline def index(u: Double, low: Double, scale: Double, n: Int): Int =
+  private[render] inline def index(u: Double, low: Double, scale: Double, n: Int): Int =
     val r = (u - low) * scale
     if !(r > 0) then 0 else Math.min(r.toInt, n - 1)
 
