@@ -123,7 +123,12 @@ object Renderer:
       val eyeRays = config.integrator match
         case Integrator.Whitted(_, n)  => config.columns.toLong * config.rows * n * n
         case settings: Integrator.Path => config.columns.toLong * config.rows * settings.samples
-      val world = World(scene, pool, shadowRays = fullRays, eyeRays, mirrorRays = fullRays)
+      // Whitted's quick mode traces the primary rays alone.
+      val eyeOnly = config.integrator match
+        case Integrator.Whitted(ShadingMode.Quick, _) => true
+        case _                                        => false
+      val world =
+        World(scene, pool, shadowRays = fullRays, eyeRays, mirrorRays = fullRays, eyeOnly = eyeOnly)
       config.integrator match
         case Integrator.Whitted(mode, n) => WhittedFrame(world, projection, config, mode, n)
         case settings: Integrator.Path   =>

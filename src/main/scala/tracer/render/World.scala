@@ -26,20 +26,28 @@ import tracer.scene.{Light, Scene, SceneObject, Surface}
   *   planes (Whitted's full mode: its primary rays); when that is as many as `eyeRays` needs,
   *   each plane that mirrors gets an [[EyeBuffer]] around the camera's mirror image, which answers
   *   the rays it reflects from the camera's
+  * @param eyeOnly    whether every ray the render traces starts at the camera (Whitted's quick
+  *   mode): then, when the camera's buffer will answer them all, nothing walks the trees but the
+  *   buffer's build, and they are built coarse ([[BvhBuilder.wholeLeaf]] of one ray)
   */
 final class World(
     scene: Scene,
     pool: Option[ExecutionContext] = None,
     shadowRays: Long = 0,
     eyeRays: Long = 0,
-    mirrorRays: Long = 0
+    mirrorRays: Long = 0,
+    eyeOnly: Boolean = false
 ):
-  // The rays the trees are built for: the primary rays when known, else as many as need the finest.
-  private val rays                        = if eyeRays > 0 then eyeRays else Long.MaxValue
   private val objects: Array[SceneObject] = scene.objects.toArray
   private val shapes: Array[Shape]        = objects.map(_.shape)
-  private val surfaces: Array[Surface]    = objects.map(_.surface)
-  private val bvh                         = Bvh(shapes.toIndexedSeq, pool, rays = rays)
+  // The rays the trees are built for: the primary rays when known, else as many as need the
+  // finest; one when the camera's buffer will answer every ray (World.walkless).
+  private val rays =
+    if eyeOnly && World.walkless(shapes, eyeRays) then 1L
+    else if eyeRays > 0 then eyeRays
+    else Long.MaxValue
+  private val surfaces: Array[Surface] = objects.map(_.surface)
+  private val bvh                      = Bvh(shapes.toIndexedSeq, pool, rays = rays)
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
 
@@ -602,6 +610,28 @@ object World:
       widen(box, 0)
       box
     }
+
+  /** True when a render of `rays` rays, all from the camera, over `shapes` will build the
+    * camera's buffer over a tree coarse enough to be deep: more than sixteen of the coarsest
+    * leaves' worth of items ([[BvhBuilder.CoarseLeaf]]), each bounded shape one and each face of
+    * a mesh one (planes none), and as many rays an item as [[World]] asks of a buffer.
+    *
+    * Perf: in quick mode at 3840×2160 of 20,000 `<triangle>`s, the fine tree's build was 29 ms
+    * of a 600 ms first frame, and no ray walks it (docs/performance.md, round 32).
+    */
+  private[render] def walkless(shapes: Array[Shape], rays: Long): Boolean =
+    // Perf: a plain count, once a world (a million faces count as one mesh).
+    var items = 0L
+    var k     = 0
+    while k < shapes.length do
+      items += (shapes(k) match
+        case m: Mesh                  => m.faceCount.toLong
+        case _: tracer.geometry.Plane => 0L
+        case _                        => 1L)
+      k += 1
+    items > 16L * BvhBuilder.CoarseLeaf &&
+    (rays >= EyeBuffer.MinRays && rays >= EyeBuffer.RaysPerItem * items ||
+      rays >= EyeBuffer.ShortRenderRaysPerItem * items)
 
   /** Widens the box at `at` of `boxes` (six doubles, lo then hi) by 10⁻⁷ of its coordinates'
     * size, 1 + the largest |coordinate|: what the beams' and the light buffers' boxes take for

@@ -184,6 +184,38 @@ class EyeBufferProperties extends ScalaCheckSuite:
     val few = Seq(Sphere(Vec3.Zero, 1), Sphere(Vec3(3, 0, 0), 1), Sphere(Vec3(0, 3, 0), 1))
     assert(World(sceneOf(few, Vec3(0, 0, -5)), eyeRays = Long.MaxValue).eyeBuffer.isEmpty)
 
+  test(
+    "quick mode, whose rays the camera's buffer all answers, builds coarse trees: the same answers"
+  ):
+    // 2,450 faces and 40 spheres: enough items for the coarse trees to be deep.
+    val land   = terrain(35, 0, 0.5)
+    val shapes = land +: Plane.at(Vec3.UnitY, -1) +: (0 until 40).map(i =>
+      Sphere(Vec3(i % 8 - 4, 1.2, i / 8), 0.3)
+    )
+    val scene = sceneOf(shapes, Vec3(0, 3, -9))
+    val rays  = 3840L * 2160
+    val quick = World(scene, eyeRays = rays, eyeOnly = true)
+    val fine  = World(scene, eyeRays = rays)
+    assert(quick.eyeBuffer.isDefined)
+    assert(quick.tree.nodeCount < fine.tree.nodeCount, (quick.tree.nodeCount, fine.tree.nodeCount))
+    val (coarse, finer) = (quick.meshTree(land).get, fine.meshTree(land).get)
+    assert(coarse.nodeCount < finer.nodeCount, (coarse.nodeCount, finer.nodeCount))
+    // A short quick render, or too few items, keeps the fine trees.
+    assertEquals(
+      World(scene, eyeRays = 1000, eyeOnly = true).tree.nodeCount,
+      World(scene, eyeRays = 1000).tree.nodeCount
+    )
+    val (qq, qf) = (quick.newQuery(), fine.newQuery())
+    val eye      = scene.camera.location
+    for i <- -40 to 40; j <- -25 to 25 do
+      val d  = Vec3(i / 40.0, j / 40.0 - 0.2, 1).normalised.get
+      val hq = quick.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, Double.PositiveInfinity, qq)
+      val hf = fine.nearestAlong(eye.x, eye.y, eye.z, d.x, d.y, d.z, Double.PositiveInfinity, qf)
+      assertEquals(hq, hf, d.toString)
+      if hq >= 0 then
+        assertEquals(qq.distance, qf.distance, d.toString)
+        assertEquals(qq.face, qf.face, d.toString)
+
   test("a buffer's items are sorted by their boxes' distance from the eye"):
     val shapes = Seq(terrain(12, 0, 0.5), Sphere(Vec3(0, 2, 0), 1), Sphere(Vec3(2, 1, 3), 0.5))
     val buffer = World(sceneOf(shapes, Vec3(1, 4, -7)), eyeRays = Long.MaxValue).eyeBuffer.get
