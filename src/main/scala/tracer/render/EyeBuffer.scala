@@ -94,6 +94,12 @@ object EyeBuffer:
     */
   val MinItems: Long = 256
 
+  /** True when `rays` rays from a centre pay for a buffer over `items` items: at least
+    * [[MinRays]] and [[RaysPerItem]] an item, or [[ShortRenderRaysPerItem]] an item.
+    */
+  def pays(rays: Long, items: Long): Boolean =
+    rays >= MinRays && rays >= RaysPerItem * items || rays >= ShortRenderRaysPerItem * items
+
   /** The square of the largest distance of a ray's line from the centre, relative to the ray's
     * start's distance, that [[EyeBuffer.behind]] accepts: (10⁻⁹)².
     */

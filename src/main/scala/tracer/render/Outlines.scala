@@ -86,9 +86,10 @@ private[render] object Outlines:
           outlines(7 * i + 4) = u2; outlines(7 * i + 5) = v2
           outlines(7 * i + 6) = m
 
-  /** The cells along v, from `cv0` to `cv1`, that item `i`'s triangle (its outline, widened by
-    * its margin) may meet in column `cu` of face `f`: the first in the high 32 bits, the last in
-    * the low (none when the first is greater); all of them for an item without an outline.
+  /** The cells along v, from `cv0` to `cv1`, that outlined item `i`'s triangle (its outline,
+    * widened by its margin) may meet in column `cu` of face `f`: the first in the high 32 bits,
+    * the last in the low (none when the first is greater). An item without an outline takes all
+    * of them, without a call ([[LightBuffer]]'s `cellsAlong`).
     *
     * Why exact: the triangle's part within the column's strip of u (widened by the margin) is a
     * convex polygon whose corners are the triangle's corners inside the strip and the points
@@ -111,37 +112,35 @@ private[render] object Outlines:
       cv0: Int,
       cv1: Int
   ): Long =
-    val o = 7 * i
-    if outlines(o).isNaN then span(cv0, cv1)
+    val o     = 7 * i
+    val m     = outlines(o + 6)
+    val nu    = sizes(3 * f)
+    val from  = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu) - m
+    val to    = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu + 1) + m
+    var least = Double.PositiveInfinity
+    var most  = Double.NegativeInfinity
+    var k     = 0
+    while k < 6 do
+      val u = outlines(o + k)
+      val v = outlines(o + k + 1)
+      if u >= from && u <= to then
+        least = Math.min(least, v); most = Math.max(most, v)
+      val n  = if k == 4 then 0 else k + 2
+      val un = outlines(o + n)
+      val vn = outlines(o + n + 1)
+      if u < from && un > from || u > from && un < from then
+        val w = crossing(u, v, un, vn, from)
+        least = Math.min(least, w); most = Math.max(most, w)
+      if u < to && un > to || u > to && un < to then
+        val w = crossing(u, v, un, vn, to)
+        least = Math.min(least, w); most = Math.max(most, w)
+      k += 2
+    if !(least <= most) then span(1, 0)
     else
-      val m     = outlines(o + 6)
-      val nu    = sizes(3 * f)
-      val from  = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu) - m
-      val to    = cellEdge(windows(4 * f), windows(4 * f + 2), nu, cu + 1) + m
-      var least = Double.PositiveInfinity
-      var most  = Double.NegativeInfinity
-      var k     = 0
-      while k < 6 do
-        val u = outlines(o + k)
-        val v = outlines(o + k + 1)
-        if u >= from && u <= to then
-          least = Math.min(least, v); most = Math.max(most, v)
-        val n  = if k == 4 then 0 else k + 2
-        val un = outlines(o + n)
-        val vn = outlines(o + n + 1)
-        if u < from && un > from || u > from && un < from then
-          val w = crossing(u, v, un, vn, from)
-          least = Math.min(least, w); most = Math.max(most, w)
-        if u < to && un > to || u > to && un < to then
-          val w = crossing(u, v, un, vn, to)
-          least = Math.min(least, w); most = Math.max(most, w)
-        k += 2
-      if !(least <= most) then span(1, 0)
-      else
-        val nv = sizes(3 * f + 1)
-        val lo = LightBuffer.index(least - m - 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
-        val hi = LightBuffer.index(most + m + 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
-        span(Math.max(lo, cv0), Math.min(hi, cv1))
+      val nv = sizes(3 * f + 1)
+      val lo = LightBuffer.index(least - m - 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
+      val hi = LightBuffer.index(most + m + 1e-13, windows(4 * f + 1), windows(4 * f + 3), nv)
+      span(Math.max(lo, cv0), Math.min(hi, cv1))
 
   /** The v where the edge from (u, v) to (un, vn) crosses u = x (x strictly between u and un). */
   private inline def crossing(u: Double, v: Double, un: Double, vn: Double, x: Double): Double =

@@ -161,9 +161,7 @@ final class World(
   // code's compilation in the JIT's window). Their items are all the tree's (the point lights'
   // when those are the same).
   private def worth(rays: Long) =
-    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems &&
-      (rays >= EyeBuffer.MinRays && rays >= EyeBuffer.RaysPerItem * bvh.itemCount ||
-        rays >= EyeBuffer.ShortRenderRaysPerItem * bvh.itemCount)
+    bvh.deep && bvh.itemCount >= EyeBuffer.MinItems && EyeBuffer.pays(rays, bvh.itemCount)
   private val centres: IArray[Vec3] =
     val eye    = scene.camera.location
     val images = if worth(mirrorRays) then World.mirrorImages(eye, objects) else IArray.empty[Vec3]
@@ -614,7 +612,7 @@ object World:
   /** True when a render of `rays` rays, all from the camera, over `shapes` will build the
     * camera's buffer over a tree coarse enough to be deep: more than sixteen of the coarsest
     * leaves' worth of items ([[BvhBuilder.CoarseLeaf]]), each bounded shape one and each face of
-    * a mesh one (planes none), and as many rays an item as [[World]] asks of a buffer.
+    * a mesh one (planes none), and rays enough to pay for it ([[EyeBuffer.pays]]).
     *
     * Perf: in quick mode at 3840×2160 of 20,000 `<triangle>`s, the fine tree's build was 29 ms
     * of a 600 ms first frame, and no ray walks it (docs/performance.md, round 32).
@@ -629,9 +627,7 @@ object World:
         case _: tracer.geometry.Plane => 0L
         case _                        => 1L)
       k += 1
-    items > 16L * BvhBuilder.CoarseLeaf &&
-    (rays >= EyeBuffer.MinRays && rays >= EyeBuffer.RaysPerItem * items ||
-      rays >= EyeBuffer.ShortRenderRaysPerItem * items)
+    items > 16L * BvhBuilder.CoarseLeaf && EyeBuffer.pays(rays, items)
 
   /** Widens the box at `at` of `boxes` (six doubles, lo then hi) by 10⁻⁷ of its coordinates'
     * size, 1 + the largest |coordinate|: what the beams' and the light buffers' boxes take for
