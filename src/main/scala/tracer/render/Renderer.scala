@@ -13,7 +13,8 @@ object Renderer:
   /** The thread count used when none is given: the machine's available processors. */
   def defaultThreads: Int = Runtime.getRuntime.availableProcessors
 
-  /** Renders `scene` as `config` says, on a fixed pool of `threads` threads, one row a task.
+  /** Renders `scene` as `config` says, on a fixed pool of `threads` threads, a few rows a task
+    * ([[Tiles]]).
     *
     * The picture depends only on `scene` and `config`, never on `threads`. `band` chooses the
     * rows to render (the `-R a:b` option), by default all: the result is those rows of the whole
@@ -27,7 +28,7 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Bitmap =
-    inRows(scene, config, threads, onRow, band)((w, h) => Bitmap.byRows(w, h)(_))(_.row)
+    inRows(scene, config, threads, onRow, band)((w, h) => Bitmap.byRows(w, h)(_))(_.rows)
 
   /** Renders `scene` as [[render]] does, into linear floating-point pixels for a `.pfm` or `.exr`
     * file: each pixel the mean of its samples as they are, neither brought into range nor encoded
@@ -40,11 +41,11 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Raster =
-    inRows(scene, config, threads, onRow, band)((w, h) => Raster.byRows(w, h)(_))(_.linearRow)
+    inRows(scene, config, threads, onRow, band)((w, h) => Raster.byRows(w, h)(_))(_.linearRows)
 
-  /** The rows of `band` of the picture, one task each on a fixed pool of `threads` threads, each
-    * written by `row` of the frame straight into the image that `image` builds (a [[Bitmap]] or
-    * a [[Raster]], both filled row by row).
+  /** The rows of `band` of the picture, a few a task ([[Tiles.rowsPerTask]]) on a fixed pool of
+    * `threads` threads, each task's written by `rows` of the frame straight into the image that
+    * `image` builds (a [[Bitmap]] or a [[Raster]], both filled row by row).
     */
   private def inRows[A](
       scene: Scene,
@@ -52,23 +53,26 @@ object Renderer:
       threads: Int,
       onRow: () => Unit,
       band: Range
-  )(image: (Int, Int) => (PixelWriter => Unit) => A)(row: Frame => RowWriter): A =
+  )(image: (Int, Int) => (PixelWriter => Unit) => A)(rows: Frame => RowsWriter): A =
     require(threads >= 1, s"threads must be at least 1, got $threads")
-    val rows = Math.max(0, band.start) until Math.min(config.rows, band.end)
-    require(rows.nonEmpty, s"the band $band holds no rows of a picture ${config.rows} rows high")
-    val pool = Executors.newFixedThreadPool(threads, WorkerThreads)
+    val first = Math.max(0, band.start)
+    val end   = Math.min(config.rows, band.end)
+    require(first < end, s"the band $band holds no rows of a picture ${config.rows} rows high")
+    val height = Tiles.rowsPerTask(end - first, threads)
+    val pool   = Executors.newFixedThreadPool(threads, WorkerThreads)
     try
       given context: ExecutionContext = ExecutionContext.fromExecutorService(pool)
       // The world is built on the same threads (a large mesh's tree in parallel).
-      val write = row(Frame(scene, config, Some(context)))
-      // A queue of many small row tasks keeps every thread busy however uneven the rows are;
-      // each writes its row straight into the picture (no row images to stack afterwards).
-      image(config.columns, rows.size) { store =>
-        val done = Future.traverse(rows) { y =>
+      val write = rows(Frame(scene, config, Some(context)))
+      // A queue of many small tasks keeps every thread busy however uneven the rows are; each
+      // writes its rows straight into the picture (no row images to stack afterwards).
+      image(config.columns, end - first) { store =>
+        val done = Future.traverse(first until end by height) { y =>
           Future(RowFailure.guard {
             WorkerThreads.lowerForRows()
-            write(y - rows.start, y, store)
-            onRow()
+            val count = Math.min(height, end - y)
+            write(y - first, y, count, store)
+            (0 until count).foreach(_ => onRow())
           })
         }
         Await.result(done, Duration.Inf)
@@ -77,16 +81,19 @@ object Renderer:
     catch case RowFailure(cause) => throw cause
     finally pool.shutdownNow(): Unit
 
-  /** A frame's row writer: row `y` of the picture stored as row `at` through the image's
-    * [[PixelWriter]] (from [[Bitmap.byRows]] or [[Raster.byRows]]).
+  /** A frame's writer of a task's rows: rows `y` until `y + count` of the picture (the second
+    * and third numbers) stored as rows from `at` (the first) through the image's [[PixelWriter]]
+    * (from [[Bitmap.byRows]] or [[Raster.byRows]]).
     */
-  private type RowWriter = (Int, Int, PixelWriter) => Unit
+  private type RowsWriter = (Int, Int, Int, PixelWriter) => Unit
 
-  /** Renders `scene` on the calling thread alone. */
+  /** Renders `scene` on the calling thread alone, a row at a time from left to right (the plain
+    * order, which the tests compare [[render]]'s tiles with).
+    */
   def renderSequential(scene: Scene, config: CameraConfig): Bitmap =
     val frame = Frame(scene, config)
     Bitmap.byRows(config.columns, config.rows)(out =>
-      (0 until config.rows).foreach(y => frame.row(y, y, out))
+      (0 until config.rows).foreach(y => frame.rows(y, y, 1, out))
     )
 
   /** Where a pixel's n × n samples lie along each axis, from its top left corner in pixel units:
@@ -98,11 +105,15 @@ object Renderer:
     * integrator's own precomputation.
     */
   private abstract class Frame:
-    /** Row `y` of the picture, written as row `at` through `out` (from [[Bitmap.byRows]]). */
-    def row(at: Int, y: Int, out: PixelWriter): Unit
+    /** Rows `y` until `y + count` of the picture, written as rows from `at` through `out` (from
+      * [[Bitmap.byRows]]), a tile at a time ([[Tiles.foreach]]).
+      */
+    def rows(at: Int, y: Int, count: Int, out: PixelWriter): Unit
 
-    /** Row `y` as [[row]] writes it, for floating-point output: unclamped means, not encoded. */
-    def linearRow(at: Int, y: Int, out: PixelWriter): Unit
+    /** The rows as [[rows]] writes them, for floating-point output: unclamped means, not
+      * encoded.
+      */
+    def linearRows(at: Int, y: Int, count: Int, out: PixelWriter): Unit
 
   private object Frame:
     /** The frame of `config`'s integrator. */
@@ -147,23 +158,16 @@ object Renderer:
     // 255: Bitmap.byRows).
     private val levels = ByteLevels(config.encoding)
 
-    def row(at: Int, y: Int, out: PixelWriter): Unit =
+    def rows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val shading = Shading(world, mode)
-      // Perf: a counted loop over the row, each pixel a method call (encoded): the loop stays
-      // small, so the JIT compiles the pixel once, not the whole row on-stack and then again
-      // (docs/performance.md, round 9; RenderBench).
-      var x = 0
-      while x < config.columns do
-        encoded(shading, x, y, at, out)
-        x += 1
+      // Perf: each pixel a method call (encoded): the loops stay small, so the JIT compiles the
+      // pixel once, not the loops on-stack and then again (docs/performance.md, round 9;
+      // RenderBench).
+      Tiles.foreach(config.columns, y, count)((x, row, i) => encoded(shading, x, row, at + i, out))
 
-    def linearRow(at: Int, y: Int, out: PixelWriter): Unit =
+    def linearRows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val shading = Shading(world, mode)
-      // Perf: as row.
-      var x = 0
-      while x < config.columns do
-        linear(shading, x, y, at, out)
-        x += 1
+      Tiles.foreach(config.columns, y, count)((x, row, i) => linear(shading, x, row, at + i, out))
 
     /** Pixel (x, y) of the picture, encoded, stored as (x, at) through `out`. */
     private def encoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
@@ -253,15 +257,15 @@ object Renderer:
     * whole for an 8-bit file (an unbiased estimate is never clamped sample by sample).
     */
   private final class PathFrame(tracer: PathTracer, config: CameraConfig) extends Frame:
-    def row(at: Int, y: Int, out: PixelWriter): Unit =
+    def rows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val task = tracer.task()
-      (0 until config.columns).foreach(x =>
-        out.put(x, at, config.encoding.encode(task.pixel(x, y).inRange))
+      Tiles.foreach(config.columns, y, count)((x, row, i) =>
+        out.put(x, at + i, config.encoding.encode(task.pixel(x, row).inRange))
       )
 
-    def linearRow(at: Int, y: Int, out: PixelWriter): Unit =
+    def linearRows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val task = tracer.task()
-      (0 until config.columns).foreach(x => out.put(x, at, task.pixel(x, y)))
+      Tiles.foreach(config.columns, y, count)((x, row, i) => out.put(x, at + i, task.pixel(x, row)))
 
   /** Names the worker threads and lets the JVM exit without waiting for them. */
   private object WorkerThreads extends ThreadFactory:
