@@ -7,8 +7,9 @@ package tracer.render
   *
   * Perf: the rays of a tile's pixels, and the rays they spawn, meet the same few branches of the
   * trees and the same cells of the light and eye buffers, where the rays of a whole row sweep
-  * across all of them and push the last row's out of the processor's caches before they are
-  * needed again. Steady frames on one thread (`scripts/ab.sh`): 1280×720 mesh-80000 1028 → 936
+  * across all of them; we take the gain to be the processor's caches keeping what the pixel above
+  * used (this VM has no counters to show it, and smaller trees and faces did not move the times:
+  * docs/performance.md, round 33). Steady frames on one thread (`scripts/ab.sh`): 1280×720 mesh-80000 1028 → 936
   * ms, mesh-5000 519 → 462, 3840×2160 mesh-20000 about 4100 → 3450 (docs/performance.md,
   * round 33).
   */
