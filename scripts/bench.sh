@@ -88,24 +88,10 @@ trap 'rm -rf "$out"' EXIT
 
 now() { date +%s%N; }
 
-# best_of CMD...: runs CMD $runs times, prints "best-wall-ms best-tracetime-ms" (tracetime from -t).
+# best_of CMD... [-- OTHER...]: runs CMD $runs times, prints "best-wall-ms best-tracetime-ms"
+# (tracetime from -t). With OTHER, runs the two in turn (CMD, OTHER, CMD, …), so that a slow spell
+# of the machine falls on both sides of a ratio, not on one, and adds OTHER's best wall time.
 best_of() {
-  local best=; local best_trace=; local i start end ms trace
-  for ((i = 0; i < runs; i++)); do
-    start=$(now)
-    trace=$("$@" | sed -n 's/^Tracetime: \([0-9]*\) ms$/\1/p')
-    end=$(now)
-    ms=$(((end - start) / 1000000))
-    if [ -z "$best" ] || [ "$ms" -lt "$best" ]; then best=$ms; fi
-    if [ -n "$trace" ] && { [ -z "$best_trace" ] || [ "$trace" -lt "$best_trace" ]; }; then best_trace=$trace; fi
-  done
-  echo "$best ${best_trace:--}"
-}
-
-# best_pair CMD... -- OTHER...: runs CMD and OTHER in turn, $runs times each (CMD, OTHER, CMD, …),
-# so that a slow spell of the machine falls on both sides of a ratio, not on one; prints
-# "best-wall-ms best-tracetime-ms other-best-wall-ms" (tracetime from CMD's -t).
-best_pair() {
   local first=() second=()
   while [ $# -gt 0 ] && [ "$1" != -- ]; do first+=("$1"); shift; done
   [ $# -gt 0 ] && shift
@@ -118,13 +104,14 @@ best_pair() {
     ms=$(((end - start) / 1000000))
     if [ -z "$best" ] || [ "$ms" -lt "$best" ]; then best=$ms; fi
     if [ -n "$trace" ] && { [ -z "$best_trace" ] || [ "$trace" -lt "$best_trace" ]; }; then best_trace=$trace; fi
+    [ ${#second[@]} -gt 0 ] || continue
     start=$(now)
     "${second[@]}" >/dev/null
     end=$(now)
     ms=$(((end - start) / 1000000))
     if [ -z "$other" ] || [ "$ms" -lt "$other" ]; then other=$ms; fi
   done
-  echo "$best ${best_trace:--} $other"
+  echo "$best ${best_trace:--}${other:+ $other}"
 }
 
 if $alloc; then
@@ -264,7 +251,7 @@ if $movie; then
   echo "| work | tracer wall ms | tracer render ms |$($povray && echo ' POV-Ray wall ms | tracer / POV-Ray |')"
   echo "|---|---|---|$($povray && echo '---|---|')"
   if $povray; then
-    read -r wall trace pov < <(best_pair movie_tracer -- movie_povray)
+    read -r wall trace pov < <(best_of movie_tracer -- movie_povray)
   else
     read -r wall trace < <(best_of movie_tracer)
   fi
@@ -283,7 +270,7 @@ ratio_row() {
   run_p() { povray +WT"$threads" -A +W"$w" +H"$h" +I"$pov" +O"$out/p.png" +FN File_Gamma=1.0 -D -V -GA 2>/dev/null; }
   local pov_ms=
   if $povray; then
-    read -r wall trace pov_ms < <(best_pair run_t "$@" -- run_p)
+    read -r wall trace pov_ms < <(best_of run_t "$@" -- run_p)
   else
     read -r wall trace < <(best_of run_t "$@")
   fi
@@ -318,7 +305,7 @@ echo "|---|---|---|---|---|$($povray && echo '---|---|')"
 for case in "few $width $height" "spheres $width $height" "mesh-5000 $width $height" "mesh-20000 $width $height" "mesh-80000 $width $height" "few 32 24"; do
   set -- $case
   if $povray; then
-    read -r wall trace pov < <(best_pair run_tracer "$2" "$3" "$1" -- run_povray "$2" "$3" "$1")
+    read -r wall trace pov < <(best_of run_tracer "$2" "$3" "$1" -- run_povray "$2" "$3" "$1")
   else
     read -r wall trace < <(best_of run_tracer "$2" "$3" "$1")
   fi
