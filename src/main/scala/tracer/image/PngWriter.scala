@@ -14,7 +14,7 @@ private[image] object PngWriter:
 
   private val Signature = Array[Byte](0x89.toByte, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n')
 
-  /** Writes `bitmap` to `out` as an 8-bit RGB PNG, each row with the filter that compresses best,
+  /** Writes `bitmap` to `out` as an 8-bit RGB PNG, each row filtered with Sub or Up ([[bestFilter]]),
     * filtering and deflating on up to `workers` threads besides this one (none for 1: this thread
     * does it all); the bytes are the same for any number.
     */
@@ -111,8 +111,7 @@ private[image] object PngWriter:
     Array((v >>> 24).toByte, (v >>> 16).toByte, (v >>> 8).toByte, v.toByte)
 
   /** Rows `from` until `until` of `bitmap` as 8-bit samples, each row its filter type's byte and
-    * the row filtered with the filter whose bytes, taken as signed values, have the smallest sum of
-    * magnitudes (the usual heuristic; the first of equal sums).
+    * the row filtered with [[bestFilter]]'s choice.
     */
   private def filterBand(bitmap: Bitmap, from: Int, until: Int): Array[Byte] =
     val stride  = 3 * bitmap.width
@@ -144,54 +143,35 @@ private[image] object PngWriter:
       row(i) = to8Bit(samples(start + i), maxval).toByte
       i += 1
 
-  /** The PNG filter (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth) whose filtered bytes of `row`, taken
-    * as signed values, have the smallest sum of magnitudes; the first such filter at a tie.
+  /** The PNG filter for `row` below `above`: Sub (1) or Up (2), whichever's filtered bytes, taken
+    * as signed values, have the smaller sum of magnitudes; Sub at a tie.
+    *
+    * Perf: the usual heuristic tries all five filters (None, Sub, Up, Average, Paeth). Of those,
+    * Sub or Up alone made smaller files than the five on all thirteen pictures measured (the
+    * benchmark scenes at 3840×2160, the gallery at 960×540, two path-traced pictures: 0.2–8%
+    * smaller), at two table lookups a byte instead of five and Paeth's predictor
+    * (docs/performance.md, round 35).
     */
   private[image] def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
-    // Perf: the five sums in one pass over the row, in five locals, with a table for the
-    // magnitudes and the predictor written out: this runs cold, once a picture, where five passes
-    // cost 3/4 of a 960×540 picture's encoding (the interpreter pays for every bytecode).
-    var none, sub, up, average, paethSum = 0L
-    val n                                = row.length
-    // Perf: the first pixel's bytes have no left neighbour (a = c = 0, so Paeth predicts b).
+    var sub, up = 0L
+    val n       = row.length
+    // Perf: the first pixel's bytes have no left neighbour (Sub predicts 0).
     var i = 0
     while i < n && i < 3 do
-      val x = row(i) & 0xff
-      val b = above(i) & 0xff
-      none += Magnitude(x)
-      sub += Magnitude(x)
-      up += Magnitude((x - b) & 0xff)
-      average += Magnitude((x - (b >> 1)) & 0xff)
-      paethSum += Magnitude((x - b) & 0xff)
+      sub += Magnitude(row(i) & 0xff)
+      up += Magnitude((row(i) - above(i)) & 0xff)
       i += 1
-    // Perf: the other bytes, every neighbour present.
     while i < n do
-      val x = row(i) & 0xff
-      val a = row(i - 3) & 0xff
-      val b = above(i) & 0xff
-      val c = above(i - 3) & 0xff
-      none += Magnitude(x)
-      sub += Magnitude((x - a) & 0xff)
-      up += Magnitude((x - b) & 0xff)
-      average += Magnitude((x - ((a + b) >> 1)) & 0xff)
-      val pa = Math.abs(b - c)
-      val pb = Math.abs(a - c)
-      val pc = Math.abs(a + b - c - c)
-      paethSum += Magnitude(
-        (x - (if pa <= pb && pa <= pc then a else if pb <= pc then b else c)) & 0xff
-      )
+      sub += Magnitude((row(i) - row(i - 3)) & 0xff)
+      up += Magnitude((row(i) - above(i)) & 0xff)
       i += 1
-    if none <= sub && none <= up && none <= average && none <= paethSum then 0
-    else if sub <= up && sub <= average && sub <= paethSum then 1
-    else if up <= average && up <= paethSum then 2
-    else if average <= paethSum then 3
-    else 4
+    if sub <= up then 1 else 2
 
   /** The magnitude of each byte taken as a signed value: `Magnitude(v & 0xff) == |v.toByte|`. */
   private[image] val Magnitude: Array[Int] =
     Array.tabulate(256)(v => if v < 128 then v else 256 - v)
 
-  /** Writes `row` filtered with PNG filter `filter` (0 None, 1 Sub, 2 Up, 3 Average, 4 Paeth) into
+  /** Writes `row` filtered with PNG filter `filter` (1 Sub, 2 Up: [[bestFilter]]'s choices) into
     * `out` from `at`.
     */
   private[image] def applyFilter(
@@ -201,44 +181,23 @@ private[image] object PngWriter:
       out: Array[Byte],
       at: Int
   ): Unit =
-    // Perf: a loop of its own for each filter, its first pixel (no left neighbour: a = c = 0)
-    // apart, rather than the filter's and the neighbours' tests on every byte (JFR: applyFilter
-    // took 4% of a 3840×2160 run's samples). Bytes wrap, so x − a is the same byte signed or not;
-    // Average and Paeth read the neighbours unsigned.
-    val n     = row.length
-    val first = Math.min(n, 3)
+    // Perf: a loop of its own for each filter, Sub's first pixel (no left neighbour) apart, rather
+    // than the filter's and the neighbours' tests on every byte (JFR: applyFilter took 4% of a
+    // 3840×2160 run's samples). Bytes wrap, so x − a is the same byte signed or not.
+    val n = row.length
     // Why: the byte index of each loop below.
     var i = 0
-    filter match
-      case 0 => System.arraycopy(row, 0, out, at, n)
-      case 1 =>
-        System.arraycopy(row, 0, out, at, first)
-        i = first
-        while i < n do
-          out(at + i) = (row(i) - row(i - 3)).toByte
-          i += 1
-      case 2 =>
-        while i < n do
-          out(at + i) = (row(i) - above(i)).toByte
-          i += 1
-      case 3 =>
-        while i < first do
-          out(at + i) = (row(i) - ((above(i) & 0xff) >> 1)).toByte
-          i += 1
-        while i < n do
-          out(at + i) = (row(i) - (((row(i - 3) & 0xff) + (above(i) & 0xff)) >> 1)).toByte
-          i += 1
-      case _ =>
-        // Paeth with a = c = 0 predicts b.
-        while i < first do
-          out(at + i) = (row(i) - above(i)).toByte
-          i += 1
-        while i < n do
-          val a = row(i - 3) & 0xff
-          val b = above(i) & 0xff
-          val c = above(i - 3) & 0xff
-          out(at + i) = (row(i) - paeth(a, b, c)).toByte
-          i += 1
+    if filter == 1 then
+      val first = Math.min(n, 3)
+      System.arraycopy(row, 0, out, at, first)
+      i = first
+      while i < n do
+        out(at + i) = (row(i) - row(i - 3)).toByte
+        i += 1
+    else
+      while i < n do
+        out(at + i) = (row(i) - above(i)).toByte
+        i += 1
 
   /** Names the encoder's threads and lets the JVM exit without waiting for them. */
   private object EncoderThreads extends ThreadFactory:
@@ -246,16 +205,6 @@ private[image] object PngWriter:
       val thread = Thread(task, "tracer-png")
       thread.setDaemon(true)
       thread
-
-  /** The Paeth predictor of the PNG specification (§9.4) for the unsigned bytes `a` (left), `b`
-    * (above) and `c` (above left): of a, b and c, the nearest to a + b − c, the first at a tie.
-    */
-  private[image] def paeth(a: Int, b: Int, c: Int): Int =
-    val p  = a + b - c
-    val pa = Math.abs(p - a)
-    val pb = Math.abs(p - b)
-    val pc = Math.abs(p - c)
-    if pa <= pb && pa <= pc then a else if pb <= pc then b else c
 
   /** Writes one chunk: length, type, data, and the CRC of type and data. */
   private def chunk(out: OutputStream, kind: String)(body: DataOutputStream => Unit): Unit =

@@ -79,13 +79,13 @@ class PngWriterProperties extends ScalaCheckSuite:
         else c
     (x - predicted).toByte
 
-  property("each filter writes the bytes the PNG specification defines, the first pixel's too") {
+  property("Sub and Up write the bytes the PNG specification defines, the first pixel's too") {
     val rows = for
       n     <- Gen.choose(1, 40).map(3 * _)
       row   <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
       above <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
     yield (row.toArray, above.toArray)
-    forAll(rows, Gen.choose(0, 4), Gen.choose(0, 5)) { case ((row, above), filter, at) =>
+    forAll(rows, Gen.choose(1, 2), Gen.choose(0, 5)) { case ((row, above), filter, at) =>
       val out = Array.fill[Byte](at + row.length + 2)(7)
       PngWriter.applyFilter(filter, row, above, out, at)
       val expected = Array.fill[Byte](at)(7) ++ row.indices.map(specified(filter, row, above, _)) ++
@@ -94,26 +94,13 @@ class PngWriterProperties extends ScalaCheckSuite:
     }
   }
 
-  test("the Paeth predictor and the magnitudes' table are the specification's, for every byte"):
-    // Why: every (a, b, c) of three bytes, 16.7 million, counted rather than listed.
-    var wrong = 0
-    for a <- 0 to 255; b <- 0 to 255 do
-      var c = 0
-      while c <= 255 do
-        val p        = a + b - c
-        val expected =
-          if Math.abs(p - a) <= Math.abs(p - b) && Math.abs(p - a) <= Math.abs(p - c) then a
-          else if Math.abs(p - b) <= Math.abs(p - c) then b
-          else c
-        if PngWriter.paeth(a, b, c) != expected then wrong += 1
-        c += 1
-    assertEquals(wrong, 0)
+  test("the magnitudes' table is |v| of every byte taken as signed"):
     for v <- -255 to 255 do assertEquals(PngWriter.Magnitude(v & 0xff), Math.abs(v.toByte.toInt), v)
 
-  property("each row's filter is the first whose bytes have the least sum of magnitudes"):
+  property("each row's filter is Sub or Up, whichever's bytes have the smaller sum of magnitudes"):
     val rows = for
       n <- Gen.choose(1, 60).map(3 * _)
-      // Smooth rows and noisy rows, so that each filter wins some.
+      // Smooth rows and noisy rows, rows like the one above and unlike it, so that each wins.
       step  <- Gen.choose(0, 40)
       row   <- Gen.listOfN(n, Gen.choose(0, step)).map(_.scanLeft(100)(_ + _).tail)
       above <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
@@ -121,6 +108,7 @@ class PngWriterProperties extends ScalaCheckSuite:
     yield (row.map(_.toByte).toArray, if same then row.map(_.toByte).toArray else above.toArray)
     forAll(rows) { (row, above) =>
       val sums =
-        (0 to 4).map(f => row.indices.map(i => Math.abs(specified(f, row, above, i).toInt)).sum)
-      Prop(PngWriter.bestFilter(row, above) == sums.indexOf(sums.min)) :| s"sums $sums"
+        Seq(1, 2).map(f => row.indices.map(i => Math.abs(specified(f, row, above, i).toInt)).sum)
+      val best = if sums(0) <= sums(1) then 1 else 2
+      Prop(PngWriter.bestFilter(row, above) == best) :| s"sums $sums"
     }
