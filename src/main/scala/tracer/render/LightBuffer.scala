@@ -137,15 +137,15 @@ object LightBuffer:
     // in the JIT's window: plain loops on flat arrays, no closure, range or boxed double per
     // item (a first version with them took 250 ms of a 720p render of mesh-20000; round 19).
     // Each item's key: its box's distance from the light as a float rounded down (a lower bound
-    // still), whose bits order as the distances do, above its number; one sort of longs orders
-    // them.
+    // still), whose bits order as the distances do, above its number; sorted by the distance's
+    // bits, in a stable sort, they are in the order a sort of the longs would give.
     val keys = new Array[Long](n)
     var i    = 0
     while i < n do
       val gap = distance(items.boxes, 6 * i, lx, ly, lz)
       keys(i) = (java.lang.Float.floatToRawIntBits(gap).toLong << 32) | i
       i += 1
-    java.util.Arrays.sort(keys)
+    sortByHigh(keys)
     val rel   = new Array[Double](6 * n)
     val owner = new Array[Int](n)
     val face  = new Array[Int](n)
@@ -160,22 +160,81 @@ object LightBuffer:
     var extent = 0.0
     i = 0
     while i < n do
-      val from = (keys(i) & 0xffffffffL).toInt
-      owner(i) = items.owner(from)
-      face(i) = items.face(from)
-      gaps(i) = java.lang.Float.intBitsToFloat((keys(i) >>> 32).toInt)
-      var j = 0
-      while j < 6 do
-        val d =
-          items.boxes(6 * from + j) - (if j % 3 == 0 then lx else if j % 3 == 1 then ly else lz)
-        rel(6 * i + j) = d
-        val e = Math.abs(d)
-        if e > extent && e < Double.PositiveInfinity then extent = e
-        j += 1
-      if corners.nonEmpty then Outlines.relativeCorners(items.corners, from, lx, ly, lz, corners, i)
+      val e = sorted(items, keys(i), i, lx, ly, lz, rel, owner, face, gaps, corners)
+      if e > extent then extent = e
       i += 1
     if !(extent > 0) then None
     else Some(binned(rel, corners, n, 1e-4 * extent, owner, face, gaps))
+
+  /** Writes the item of sorted key `key` (from [[build]]) as sorted item `i`: its owner, face
+    * and gap, its box relative to the light at 6i of `rel` and its corners at 10i of `corners`
+    * (when there are any); returns the box's farthest finite coordinate from the light, or 0.
+    */
+  private def sorted(
+      items: BufferItems,
+      key: Long,
+      i: Int,
+      lx: Double,
+      ly: Double,
+      lz: Double,
+      rel: Array[Double],
+      owner: Array[Int],
+      face: Array[Int],
+      gaps: Array[Float],
+      corners: Array[Double]
+  ): Double =
+    // Perf: as build; a call an item, compiled after a few hundred, where the loop written out
+    // in build ran interpreted until compiled on stack (round 35).
+    val from = (key & 0xffffffffL).toInt
+    owner(i) = items.owner(from)
+    face(i) = items.face(from)
+    gaps(i) = java.lang.Float.intBitsToFloat((key >>> 32).toInt)
+    var extent = 0.0
+    var j      = 0
+    while j < 6 do
+      val d = items.boxes(6 * from + j) - (if j % 3 == 0 then lx else if j % 3 == 1 then ly else lz)
+      rel(6 * i + j) = d
+      val e = Math.abs(d)
+      if e > extent && e < Double.PositiveInfinity then extent = e
+      j += 1
+    if corners.nonEmpty then Outlines.relativeCorners(items.corners, from, lx, ly, lz, corners, i)
+    extent
+
+  /** Sorts `keys`, each a non-negative `Int` in its high 32 bits above its index in `keys` in its
+    * low 32, into increasing order: a stable radix sort of the high bits, a byte a pass (a pass
+    * skipped where every key has the same byte), so keys of equal high bits stay in index order.
+    *
+    * Perf: the JDK's sort of the longs ran cold, 11–19 ms of a buffer's first build over 80,000
+    * faces (4–9 compiled); these plain passes take 1–5 ms (0.3 compiled; docs/performance.md,
+    * round 35).
+    */
+  private[render] def sortByHigh(keys: Array[Long]): Unit =
+    val n      = keys.length
+    var from   = keys
+    var to     = new Array[Long](n)
+    val counts = new Array[Int](257)
+    var shift  = 32
+    while shift < 64 && n > 1 do
+      java.util.Arrays.fill(counts, 0)
+      var i = 0
+      while i < n do
+        counts(((from(i) >>> shift) & 0xff).toInt + 1) += 1
+        i += 1
+      // A pass whose byte is the same in every key moves nothing.
+      if counts(((from(0) >>> shift) & 0xff).toInt + 1) != n then
+        var b = 0
+        while b < 256 do
+          counts(b + 1) += counts(b)
+          b += 1
+        i = 0
+        while i < n do
+          val byte = ((from(i) >>> shift) & 0xff).toInt
+          to(counts(byte)) = from(i)
+          counts(byte) += 1
+          i += 1
+        val swap = from; from = to; to = swap
+      shift += 8
+    if !(from eq keys) then System.arraycopy(from, 0, keys, 0, n)
 
   /** The distance from (cx, cy, cz) to the box at `at` of `boxes`, as a float no greater than it
     * (0 for a box that holds the point or is not finite: every ray tests it first).
@@ -234,24 +293,40 @@ object LightBuffer:
     val cells                   = sizes(18)
     // An item in more cells than a sixteenth of them (or 64) is tested on every ray instead.
     val widest = Math.max(64L, cells / 16L)
-    // Perf: as build: count each cell's items (refusing the widest), prefix sums, then place
-    // them: flat arrays for up to millions of entries (a mesh's faces each in several cells).
+    // Perf: as build: each item's cells found once (refusing the widest), listed in item order
+    // (item i's from `first(i)`) and counted per cell as they are found; prefix sums; then each
+    // item placed in its listed cells, a plain pass without the outlines' arithmetic. Flat arrays
+    // for up to millions of entries (a mesh's faces each in several cells). A count pass and a
+    // place pass that each found the cells again took 18–26 ms of a compiled build over 80,000
+    // faces, against 12–19 (docs/performance.md, round 35).
     val start = new Array[Int](cells + 1)
+    val first = new Array[Int](n + 1)
+    val found = Found(3 * CellsPerItem * n + 16)
     i = 0
     while i < n do
-      count(rel, on, parts, outlines, i, windows, sizes, widest, start)
+      first(i) = found.size
+      collect(rel, on, parts, outlines, i, windows, sizes, widest, start, found)
       i += 1
+    first(n) = found.size
     var c = 0
     while c < cells do
       start(c + 1) += start(c)
       c += 1
-    val items  = new Array[Int](start(cells))
-    val next   = java.util.Arrays.copyOf(start, cells)
+    val items = new Array[Int](start(cells))
+    val next  = java.util.Arrays.copyOf(start, cells)
+    i = 0
+    while i < n do
+      var k = first(i)
+      while k < first(i + 1) do
+        val cell = found.cells(k)
+        items(next(cell)) = i
+        next(cell) += 1
+        k += 1
+      i += 1
     var always = 0
     i = 0
     while i < n do
       if on(i) == OnAlways then always += 1
-      else place(rel, on, parts, outlines, i, windows, sizes, items, next)
       i += 1
     val everyRay = new Array[Int](always)
     always = 0
@@ -307,11 +382,11 @@ object LightBuffer:
     if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
     else Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1)
 
-  /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), or when it covers
-    * more than `widest` cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray
-    * or on no face is left alone.
+  /** Appends item `i`'s cells to `found` and counts it into each (cell c's count at
+    * `start(c + 1)`), or when it covers more than `widest` cells, sets `on(i)` to [[OnAlways]]
+    * instead; an item tested on every ray or on no face is left alone.
     */
-  private def count(
+  private def collect(
       rel: Array[Double],
       on: Array[Byte],
       parts: Array[Double],
@@ -320,10 +395,11 @@ object LightBuffer:
       windows: Array[Double],
       sizes: Array[Int],
       widest: Long,
-      start: Array[Int]
+      start: Array[Int],
+      found: Found
   ): Unit =
     if on(i) != OnAlways && on(i) != OnNone then
-      // Perf: as binned; the cells an item covers, summed, then each counted.
+      // Perf: as binned; the cells an item covers, summed, then each collected.
       var span = 0L
       cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _, _) =>
         span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
@@ -336,39 +412,30 @@ object LightBuffer:
             val cells = cellsAlong(outlines, i, windows, sizes, f, cu, cv0, cv1)
             var cv    = (cells >> 32).toInt
             while cv <= cells.toInt do
-              start(base + cu * nv + cv + 1) += 1
+              val cell = base + cu * nv + cv
+              start(cell + 1) += 1
+              found.add(cell)
               cv += 1
             cu += 1
         }
 
-  /** Places item `i` in each of its cells, at `next(c)` of `items` for cell c, and moves each such
-    * `next` on; an item on no face is left out.
-    */
-  private def place(
-      rel: Array[Double],
-      on: Array[Byte],
-      parts: Array[Double],
-      outlines: Array[Double],
-      i: Int,
-      windows: Array[Double],
-      sizes: Array[Int],
-      items: Array[Int],
-      next: Array[Int]
-  ): Unit =
-    if on(i) != OnNone then
-      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
-        // Perf: as binned.
-        var cu = cu0
-        while cu <= cu1 do
-          val cells = cellsAlong(outlines, i, windows, sizes, f, cu, cv0, cv1)
-          var cv    = (cells >> 32).toInt
-          while cv <= cells.toInt do
-            val cell = base + cu * nv + cv
-            items(next(cell)) = i
-            next(cell) += 1
-            cv += 1
-          cu += 1
-      }
+  /** A growing list of cells: the first `size` of `cells` in use. */
+  private final class Found(capacity: Int):
+    /** The cells found. */
+    var cells: Array[Int] = new Array[Int](capacity)
+
+    /** The number of cells found. */
+    var size: Int = 0
+
+    /** Appends `cell`, doubling the array when it is full. */
+    inline def add(cell: Int): Unit =
+      if size == cells.length then grow()
+      cells(size) = cell
+      size += 1
+
+    /** Doubles the array's room. */
+    private def grow(): Unit =
+      cells = java.util.Arrays.copyOf(cells, Math.min(Int.MaxValue - 8L, 2L * cells.length).toInt)
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
     * high u and v (from `parts` for an item on one face; found again for one on several).

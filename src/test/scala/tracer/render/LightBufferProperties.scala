@@ -1,7 +1,7 @@
 package tracer.render
 
 import munit.ScalaCheckSuite
-import org.scalacheck.Gen
+import org.scalacheck.{Gen, Prop}
 import org.scalacheck.Prop.forAll
 import tracer.geometry.{Box, Plane, Ray, Shape, Sphere, Triangle}
 import tracer.math.Vec3
@@ -257,3 +257,19 @@ class LightBufferProperties extends ScalaCheckSuite:
       val d     = t / reach
       assert(walked(w, p, d, reach, query), s"the walk from $p")
       assert(w.occludedToward(buffer, p.x, p.y, p.z, d.x, d.y, d.z, reach, query), s"from $p")
+
+  property("the keys' radix sort orders them as a sort of the longs does"):
+    // High halves from few values (many ties, which must keep their index order) to many, some
+    // with every byte but the lowest the same (passes skipped) and some spread over all four.
+    val keys = for
+      n     <- Gen.choose(0, 600)
+      range <- Gen.oneOf(1, 4, 300, 70000, Int.MaxValue)
+      highs <- Gen.listOfN(n, Gen.choose(0, range - 1))
+    yield highs.zipWithIndex.map((h, i) => (h.toLong << 32) | i).toArray
+    forAll(keys) { original =>
+      val ours = original.clone()
+      LightBuffer.sortByHigh(ours)
+      val expected = original.clone()
+      java.util.Arrays.sort(expected)
+      Prop(ours.sameElements(expected))
+    }
