@@ -422,9 +422,11 @@ object LightBuffer:
   /** A growing list of cells: the first `size` of `cells` in use. */
   private final class Found(capacity: Int):
     /** The cells found. */
+    // Perf: a build's list of up to millions of cells, appended to in place (binned's loops).
     var cells: Array[Int] = new Array[Int](capacity)
 
     /** The number of cells found. */
+    // Perf: as cells.
     var size: Int = 0
 
     /** Appends `cell`, doubling the array when it is full. */
