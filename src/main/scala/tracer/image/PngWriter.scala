@@ -146,11 +146,11 @@ private[image] object PngWriter:
   /** The PNG filter for `row` below `above`: Sub (1) or Up (2), whichever's filtered bytes, taken
     * as signed values, have the smaller sum of magnitudes; Sub at a tie.
     *
-    * Perf: the usual heuristic tries all five filters (None, Sub, Up, Average, Paeth). Of those,
-    * Sub or Up alone made smaller files than the five on all thirteen pictures measured (the
-    * benchmark scenes at 3840×2160, the gallery at 960×540, two path-traced pictures: 0.2–8%
-    * smaller), at two table lookups a byte instead of five and Paeth's predictor
-    * (docs/performance.md, round 35).
+    * Perf: the usual heuristic tries all five filters (None, Sub, Up, Average, Paeth). Choosing
+    * between Sub and Up alone made smaller files on twelve of thirteen pictures measured (the
+    * benchmark scenes at 3840×2160 and the gallery at 960×540 1–8% smaller, a noisy path-traced
+    * picture 0.1% smaller and another 0.6% larger), at two table lookups a byte instead of five
+    * and Paeth's predictor; 3840×2160 runs 3–5% sooner (docs/performance.md, round 35).
     */
   private[image] def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
     var sub, up = 0L
