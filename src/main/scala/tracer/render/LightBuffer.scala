@@ -293,40 +293,31 @@ object LightBuffer:
     val cells                   = sizes(18)
     // An item in more cells than a sixteenth of them (or 64) is tested on every ray instead.
     val widest = Math.max(64L, cells / 16L)
-    // Perf: as build: each item's cells found once (refusing the widest), listed in item order
-    // (item i's from `first(i)`) and counted per cell as they are found; prefix sums; then each
-    // item placed in its listed cells, a plain pass without the outlines' arithmetic. Flat arrays
-    // for up to millions of entries (a mesh's faces each in several cells). A count pass and a
-    // place pass that each found the cells again took 18–26 ms of a compiled build over 80,000
-    // faces, against 12–19 (docs/performance.md, round 35).
-    val start = new Array[Int](cells + 1)
-    val first = new Array[Int](n + 1)
-    val found = Found(3 * CellsPerItem * n + 16)
+    // Perf: as build: count each cell's items (refusing the widest), prefix sums, then place
+    // them: flat arrays for up to millions of entries (a mesh's faces each in several cells).
+    // The count pass keeps each outlined item's cells of each column (Outlines.column's answer,
+    // the costly part) in `columns`, and the place pass reads them back in the same order:
+    // finding them twice took 18–26 ms of a compiled build over 80,000 faces, against 12–19;
+    // listing every cell instead cost as many ints as the buffer's entries (57 a face of the
+    // 1.3M-face mesh at 3840×2160; docs/performance.md, round 35).
+    val start   = new Array[Int](cells + 1)
+    val columns = Columns(if outlines.isEmpty then 0 else 4 * n)
     i = 0
     while i < n do
-      first(i) = found.size
-      collect(rel, on, parts, outlines, i, windows, sizes, widest, start, found)
+      count(rel, on, parts, outlines, i, windows, sizes, widest, start, columns)
       i += 1
-    first(n) = found.size
     var c = 0
     while c < cells do
       start(c + 1) += start(c)
       c += 1
     val items = new Array[Int](start(cells))
     val next  = java.util.Arrays.copyOf(start, cells)
-    i = 0
-    while i < n do
-      var k = first(i)
-      while k < first(i + 1) do
-        val cell = found.cells(k)
-        items(next(cell)) = i
-        next(cell) += 1
-        k += 1
-      i += 1
+    columns.rewind()
     var always = 0
     i = 0
     while i < n do
       if on(i) == OnAlways then always += 1
+      else place(rel, on, parts, outlines, i, windows, sizes, items, next, columns)
       i += 1
     val everyRay = new Array[Int](always)
     always = 0
@@ -368,25 +359,12 @@ object LightBuffer:
         f += 1
       if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
 
-  /** [[Outlines.column]] for an outlined item `i`, else all of `cv0` to `cv1`, without a call. */
-  private inline def cellsAlong(
-      outlines: Array[Double],
-      i: Int,
-      windows: Array[Double],
-      sizes: Array[Int],
-      f: Int,
-      cu: Int,
-      cv0: Int,
-      cv1: Int
-  ): Long =
-    if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
-    else Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1)
-
-  /** Appends item `i`'s cells to `found` and counts it into each (cell c's count at
-    * `start(c + 1)`), or when it covers more than `widest` cells, sets `on(i)` to [[OnAlways]]
-    * instead; an item tested on every ray or on no face is left alone.
+  /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), keeping an
+    * outlined item's cells of each column in `columns`, or when it covers more than `widest`
+    * cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray or on no face is
+    * left alone.
     */
-  private def collect(
+  private def count(
       rel: Array[Double],
       on: Array[Byte],
       parts: Array[Double],
@@ -396,10 +374,10 @@ object LightBuffer:
       sizes: Array[Int],
       widest: Long,
       start: Array[Int],
-      found: Found
+      columns: Columns
   ): Unit =
     if on(i) != OnAlways && on(i) != OnNone then
-      // Perf: as binned; the cells an item covers, summed, then each collected.
+      // Perf: as binned; the cells an item covers, summed, then each counted.
       var span = 0L
       cellsOf(rel, on, parts, i, windows, sizes)((cu0, cu1, cv0, cv1, _, _, _) =>
         span += (cu1 - cu0 + 1).toLong * (cv1 - cv0 + 1)
@@ -409,35 +387,84 @@ object LightBuffer:
         cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
           var cu = cu0
           while cu <= cu1 do
-            val cells = cellsAlong(outlines, i, windows, sizes, f, cu, cv0, cv1)
-            var cv    = (cells >> 32).toInt
+            val cells =
+              if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
+              else columns.keep(Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1))
+            var cv = (cells >> 32).toInt
             while cv <= cells.toInt do
-              val cell = base + cu * nv + cv
-              start(cell + 1) += 1
-              found.add(cell)
+              start(base + cu * nv + cv + 1) += 1
               cv += 1
             cu += 1
         }
 
-  /** A growing list of cells: the first `size` of `cells` in use. */
-  private final class Found(capacity: Int):
-    /** The cells found. */
-    // Perf: a build's list of up to millions of cells, appended to in place (binned's loops).
-    var cells: Array[Int] = new Array[Int](capacity)
+  /** Places item `i` in each of its cells, at `next(c)` of `items` for cell c, and moves each such
+    * `next` on, an outlined item's cells of each column read back from `columns` in the order
+    * [[count]] kept them; an item on no face is left out.
+    */
+  private def place(
+      rel: Array[Double],
+      on: Array[Byte],
+      parts: Array[Double],
+      outlines: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int],
+      items: Array[Int],
+      next: Array[Int],
+      columns: Columns
+  ): Unit =
+    if on(i) != OnNone then
+      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, _) =>
+        // Perf: as binned.
+        var cu = cu0
+        while cu <= cu1 do
+          val cells =
+            if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
+            else columns.next()
+          var cv = (cells >> 32).toInt
+          while cv <= cells.toInt do
+            val cell = base + cu * nv + cv
+            items(next(cell)) = i
+            next(cell) += 1
+            cv += 1
+          cu += 1
+      }
 
-    /** The number of cells found. */
-    // Perf: as cells.
-    var size: Int = 0
+  /** The outlined items' cells of each column, as [[Outlines.column]] answers them: kept in
+    * order by [[count]], read back in the same order by [[place]].
+    */
+  private final class Columns(capacity: Int):
+    /** The answers kept. */
+    // Perf: a build's list of a few answers an outlined item, kept in place (binned's loops).
+    private var spans: Array[Long] = new Array[Long](Math.max(16, capacity))
 
-    /** Appends `cell`, doubling the array when it is full. */
-    inline def add(cell: Int): Unit =
-      if size == cells.length then grow()
-      cells(size) = cell
+    /** The number kept. */
+    // Perf: as spans.
+    private var size: Int = 0
+
+    /** The next to read back. */
+    // Perf: as spans.
+    private var read: Int = 0
+
+    /** Keeps `span` at the end and returns it; doubles the room when it is full. */
+    inline def keep(span: Long): Long =
+      if size == spans.length then grow()
+      spans(size) = span
       size += 1
+      span
 
-    /** Doubles the array's room. */
+    /** Reads back the next answer kept. */
+    inline def next(): Long =
+      val span = spans(read)
+      read += 1
+      span
+
+    /** Starts the reading over, from the first answer kept. */
+    def rewind(): Unit = read = 0
+
+    /** Doubles the room. */
     private def grow(): Unit =
-      cells = java.util.Arrays.copyOf(cells, Math.min(Int.MaxValue - 8L, 2L * cells.length).toInt)
+      spans = java.util.Arrays.copyOf(spans, Math.min(Int.MaxValue - 8L, 2L * spans.length).toInt)
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
     * high u and v (from `parts` for an item on one face; found again for one on several).

@@ -89,7 +89,7 @@ private[render] object Outlines:
   /** The cells along v, from `cv0` to `cv1`, that outlined item `i`'s triangle (its outline,
     * widened by its margin) may meet in column `cu` of face `f`: the first in the high 32 bits,
     * the last in the low (none when the first is greater). An item without an outline takes all
-    * of them, without a call ([[LightBuffer]]'s `cellsAlong`).
+    * of them, without a call ([[LightBuffer]]'s `count`, which keeps each answer for its `place`).
     *
     * Why exact: the triangle's part within the column's strip of u (widened by the margin) is a
     * convex polygon whose corners are the triangle's corners inside the strip and the points
