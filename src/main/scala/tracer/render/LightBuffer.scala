@@ -205,7 +205,7 @@ object LightBuffer:
     * skipped where every key has the same byte), so keys of equal high bits stay in index order.
     *
     * Perf: the JDK's sort of the longs ran cold, 11–19 ms of a buffer's first build over 80,000
-    * faces (4–9 compiled); these plain passes take 1–5 ms (0.3 compiled; docs/performance.md,
+    * faces (4–9 compiled); these plain passes take 1–9 ms (0.3–2 compiled; docs/performance.md,
     * round 35).
     */
   private[render] def sortByHigh(keys: Array[Long]): Unit =
@@ -296,10 +296,10 @@ object LightBuffer:
     // Perf: as build: count each cell's items (refusing the widest), prefix sums, then place
     // them: flat arrays for up to millions of entries (a mesh's faces each in several cells).
     // The count pass keeps each outlined item's cells of each column (Outlines.column's answer,
-    // the costly part) in `columns`, and the place pass reads them back in the same order:
-    // finding them twice took 18–26 ms of a compiled build over 80,000 faces, against 12–19;
-    // listing every cell instead cost as many ints as the buffer's entries (57 a face of the
-    // 1.3M-face mesh at 3840×2160; docs/performance.md, round 35).
+    // the costly part) in `columns`, and the place pass reads them back in the same order: the
+    // place pass took 10–26 ms of a compiled build over 80,000 faces finding them again, 3–8
+    // reading them; listing every cell instead cost as many ints as the buffer's entries (57 a
+    // face of the 1.3M-face mesh at 3840×2160; docs/performance.md, round 35).
     val start   = new Array[Int](cells + 1)
     val columns = Columns(if outlines.isEmpty then 0 else 4 * n)
     i = 0
@@ -319,6 +319,8 @@ object LightBuffer:
       if on(i) == OnAlways then always += 1
       else place(rel, on, parts, outlines, i, windows, sizes, items, next, columns)
       i += 1
+    // Why: the place pass must have read back every answer the count pass kept, in step.
+    assert(columns.allRead, "a light buffer's place pass read its columns out of step")
     val everyRay = new Array[Int](always)
     always = 0
     i = 0
@@ -461,6 +463,9 @@ object LightBuffer:
 
     /** Starts the reading over, from the first answer kept. */
     def rewind(): Unit = read = 0
+
+    /** True when every answer kept has been read back. */
+    def allRead: Boolean = read == size
 
     /** Doubles the room. */
     private def grow(): Unit =

@@ -58,25 +58,15 @@ class PngWriterProperties extends ScalaCheckSuite:
     }
   }
 
-  /** Filter type `filter` of byte `i` of `row` as the PNG specification (§9.2) defines it: the
-    * byte less its predictor, from the neighbours left (`a`), above (`b`) and above left (`c`),
-    * each 0 beyond the row's start.
+  /** Filter type `filter` (1 Sub, 2 Up) of byte `i` of `row` as the PNG specification (§9.2)
+    * defines it: the byte less its predictor, the neighbour left (`a`, 0 before the row's start)
+    * for Sub, the one above (`b`) for Up.
     */
   private def specified(filter: Int, row: Array[Byte], above: Array[Byte], i: Int): Byte =
     val x         = row(i) & 0xff
     val a         = if i >= 3 then row(i - 3) & 0xff else 0
     val b         = above(i) & 0xff
-    val c         = if i >= 3 then above(i - 3) & 0xff else 0
-    val p         = a + b - c
-    val predicted = filter match
-      case 0 => 0
-      case 1 => a
-      case 2 => b
-      case 3 => (a + b) / 2
-      case _ =>
-        if Math.abs(p - a) <= Math.abs(p - b) && Math.abs(p - a) <= Math.abs(p - c) then a
-        else if Math.abs(p - b) <= Math.abs(p - c) then b
-        else c
+    val predicted = if filter == 1 then a else b
     (x - predicted).toByte
 
   property("Sub and Up write the bytes the PNG specification defines, the first pixel's too") {
