@@ -310,9 +310,8 @@ object LightBuffer:
     while c < cells do
       start(c + 1) += start(c)
       c += 1
-    val items = new Array[Int](start(cells))
-    val next  = java.util.Arrays.copyOf(start, cells)
-    columns.rewind()
+    val items  = new Array[Int](start(cells))
+    val next   = java.util.Arrays.copyOf(start, cells)
     var always = 0
     i = 0
     while i < n do
@@ -361,6 +360,12 @@ object LightBuffer:
         f += 1
       if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
 
+  /** True when item `i` is binned by its triangle's outline ([[Outlines.outline]]), not its box's
+    * part: [[count]] and [[place]] ask the same.
+    */
+  private inline def outlined(outlines: Array[Double], i: Int): Boolean =
+    outlines.nonEmpty && !outlines(7 * i).isNaN
+
   /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), keeping an
     * outlined item's cells of each column in `columns`, or when it covers more than `widest`
     * cells, sets `on(i)` to [[OnAlways]] instead; an item tested on every ray or on no face is
@@ -390,8 +395,9 @@ object LightBuffer:
           var cu = cu0
           while cu <= cu1 do
             val cells =
-              if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
-              else columns.keep(Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1))
+              if outlined(outlines, i) then
+                columns.keep(Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1))
+              else Outlines.span(cv0, cv1)
             var cv = (cells >> 32).toInt
             while cv <= cells.toInt do
               start(base + cu * nv + cv + 1) += 1
@@ -420,10 +426,8 @@ object LightBuffer:
         // Perf: as binned.
         var cu = cu0
         while cu <= cu1 do
-          val cells =
-            if outlines.isEmpty || outlines(7 * i).isNaN then Outlines.span(cv0, cv1)
-            else columns.next()
-          var cv = (cells >> 32).toInt
+          val cells = if outlined(outlines, i) then columns.next() else Outlines.span(cv0, cv1)
+          var cv    = (cells >> 32).toInt
           while cv <= cells.toInt do
             val cell = base + cu * nv + cv
             items(next(cell)) = i
@@ -460,9 +464,6 @@ object LightBuffer:
       val span = spans(read)
       read += 1
       span
-
-    /** Starts the reading over, from the first answer kept. */
-    def rewind(): Unit = read = 0
 
     /** True when every answer kept has been read back. */
     def allRead: Boolean = read == size
