@@ -473,19 +473,38 @@ object LightBuffer:
       spans = java.util.Arrays.copyOf(spans, Math.min(Int.MaxValue - 8L, 2L * spans.length).toInt)
 
   /** Runs `body` on each part of a face that item `i` covers: the face and the part's low and
-    * high u and v (from `parts` for an item on one face; found again for one on several).
+    * high u and v (from `parts` for an item on one face; found again for one on several, each
+    * into the item's own four slots of `parts`, which such an item leaves unused).
+    *
+    * Perf: `body` spliced in once, and the part of an item on several faces found by a call
+    * ([[partOn]]): the six faces' footprints written out in place twice over made [[count]] 3.8
+    * KB of bytecode and [[place]] 1.9 KB, which C2 took 58 and 30 ms to compile while the first
+    * buffers were built in slower code; now 1.0 and 0.6 KB (docs/performance.md, round 36).
     */
   private inline def partsOf(rel: Array[Double], on: Array[Byte], parts: Array[Double], i: Int)(
       inline body: (Int, Double, Double, Double, Double) => Unit
   ): Unit =
     val o = on(i)
-    if o >= 0 then body(o, parts(4 * i), parts(4 * i + 1), parts(4 * i + 2), parts(4 * i + 3))
-    else if o == OnSeveral then
-      // Perf: as build.
-      var f = 0
-      while f < 6 do
-        footprint(rel, 6 * i, f)((u0, u1, v0, v1) => body(f, u0, u1, v0, v1))
-        f += 1
+    // The faces to visit: an item's one face, all six for one on several, none for one on no
+    // face or tested on every ray (OnNone and OnAlways are negative).
+    var f    = if o == OnSeveral then 0 else o.toInt
+    val last = if o == OnSeveral then 5 else o.toInt
+    while f >= 0 && f <= last do
+      if o >= 0 || partOn(rel, i, f, parts) then
+        body(f, parts(4 * i), parts(4 * i + 1), parts(4 * i + 2), parts(4 * i + 3))
+      f += 1
+
+  /** True when the box of item `i` covers part of face `f`; that part is then written at
+    * `parts(4i)`, as [[classify]] writes an item's one part.
+    */
+  private def partOn(rel: Array[Double], i: Int, f: Int, parts: Array[Double]): Boolean =
+    // Why: set by the footprint's body, which runs at most once.
+    var found = false
+    footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
+      parts(4 * i) = u0; parts(4 * i + 1) = u1; parts(4 * i + 2) = v0; parts(4 * i + 3) = v1
+      found = true
+    }
+    found
 
   /** The six faces' windows (low u and v, cells per unit of each, at 4f), their high ends (at
     * 2f) and sizes (cells along u and v, first cell, at 3f; the number of cells at 18): each
