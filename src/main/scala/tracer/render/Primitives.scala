@@ -245,13 +245,15 @@ object Primitives:
       dy: Double,
       dz: Double
   ): Double =
-    val nx = data(at)
-    val ny = data(at + 1)
-    val nz = data(at + 2)
-    val vd = nx * dx + ny * dy + nz * dz
-    if vd == 0 then Double.PositiveInfinity
+    val nx  = data(at)
+    val ny  = data(at + 1)
+    val nz  = data(at + 2)
+    val vd  = nx * dx + ny * dy + nz * dz
+    val gap = data(at + 3) - (nx * ox + ny * oy + nz * oz)
+    // Perf: a plane behind the ray refused before the division (Mesh.faceDistance).
+    if vd == 0 || !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
     else
-      val t = (data(at + 3) - (nx * ox + ny * oy + nz * oz)) / vd
+      val t = gap / vd
       if t > 0 then t else Double.PositiveInfinity
 
   /** Shape.sphereDistance on flat data: equations 17–21. */
