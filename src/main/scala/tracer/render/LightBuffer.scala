@@ -485,8 +485,8 @@ object LightBuffer:
       inline body: (Int, Double, Double, Double, Double) => Unit
   ): Unit =
     val o = on(i)
-    // The faces to visit: an item's one face, all six for one on several, none for one on no
-    // face or tested on every ray (OnNone and OnAlways are negative).
+    // Why: the faces to visit, an item's one face, all six for one on several, none for one on
+    // no face or tested on every ray (OnNone and OnAlways are negative).
     var f    = if o == OnSeveral then 0 else o.toInt
     val last = if o == OnSeveral then 5 else o.toInt
     while f >= 0 && f <= last do

@@ -250,8 +250,9 @@ object Primitives:
     val nz  = data(at + 2)
     val vd  = nx * dx + ny * dy + nz * dz
     val gap = data(at + 3) - (nx * ox + ny * oy + nz * oz)
-    // Perf: a plane behind the ray refused before the division (Mesh.faceDistance).
-    if vd == 0 || !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
+    // Perf: a plane behind the ray or parallel to it refused before the division
+    // (Mesh.faceDistance).
+    if !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
     else
       val t = gap / vd
       if t > 0 then t else Double.PositiveInfinity
