@@ -475,7 +475,12 @@ object Kernel:
       dz: Double
   ): Double = planeT(p.normal.x, p.normal.y, p.normal.z, p.distance, ox, oy, oz, dx, dy, dz)
 
-  private inline def planeT(
+  /** The distance along the ray from (ox, oy, oz) in direction (dx, dy, dz) to the plane of unit
+    * normal (nx, ny, nz) and distance `d` (equations 24–27: (D − Pn·O) / (Pn·d) when positive),
+    * else +∞: the one plane test on doubles, shared by the planes and triangles here, the scene's
+    * kernel (`render.Primitives`) and the meshes' faces ([[Mesh.faceDistance]]).
+    */
+  inline def planeT(
       nx: Double,
       ny: Double,
       nz: Double,
@@ -487,10 +492,15 @@ object Kernel:
       dy: Double,
       dz: Double
   ): Double =
-    val vd = nx * dx + ny * dy + nz * dz
-    if vd == 0 then Double.PositiveInfinity
+    val vd  = nx * dx + ny * dy + nz * dz
+    val gap = d - (nx * ox + ny * oy + nz * oz)
+    // Perf: gap / vd > 0 needs both of one sign, so a plane behind the ray, parallel to it (vd
+    // zero) or a NaN is refused before the division, as the division's sign would refuse it: a
+    // ray leaving a mesh's face tests the other faces of its leaf, most of whose planes lie
+    // behind it (docs/performance.md, round 36).
+    if !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
     else
-      val t = (d - (nx * ox + ny * oy + nz * oz)) / vd
+      val t = gap / vd
       if t > 0 then t else Double.PositiveInfinity
 
   /** Shape.triangleDistance on doubles. */

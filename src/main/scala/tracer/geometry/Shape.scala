@@ -365,16 +365,7 @@ object Mesh:
       dy: Double,
       dz: Double
   ): Double =
-    val vd  = nx * dx + ny * dy + nz * dz
-    val gap = d - (nx * ox + ny * oy + nz * oz)
-    // Perf: gap / vd > 0 needs both of one sign, so a plane behind the ray, parallel to it (vd
-    // zero) or a NaN is refused before the division, as the division's sign would refuse it
-    // (docs/performance.md, round 36).
-    val t =
-      if !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
-      else
-        val s = gap / vd
-        if s > 0 then s else Double.PositiveInfinity
+    val t = Kernel.planeT(nx, ny, nz, d, ox, oy, oz, dx, dy, dz)
     // Perf: a hit beyond the cutoff cannot count, so its barycentric test is skipped, as the
     // kernel's triangles do (Primitives.triangle).
     if t == Double.PositiveInfinity || t > cutoff then Double.PositiveInfinity

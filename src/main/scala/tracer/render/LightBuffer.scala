@@ -346,17 +346,14 @@ object LightBuffer:
   ): Unit =
     if !(gaps(i) >= near) || !finite(rel, 6 * i) then on(i) = OnAlways
     else
-      // Perf: as binned; the faces the item lies on, counted over the six.
+      // Perf: as binned; the faces the item lies on, counted over the six (an item on one face
+      // keeps its part where partOn wrote it; one on several has its parts found again).
       var faces = 0
       var f     = 0
       while f < 6 do
-        footprint(rel, 6 * i, f) { (u0, u1, v0, v1) =>
-          if faces == 0 then
-            on(i) = f.toByte
-            parts(4 * i) = u0; parts(4 * i + 1) = u1; parts(4 * i + 2) = v0
-            parts(4 * i + 3) = v1
+        if partOn(rel, i, f, parts) then
+          if faces == 0 then on(i) = f.toByte
           faces += 1
-        }
         f += 1
       if faces == 0 then on(i) = OnNone else if faces > 1 then on(i) = OnSeveral
 
@@ -495,7 +492,8 @@ object LightBuffer:
       f += 1
 
   /** True when the box of item `i` covers part of face `f`; that part is then written at
-    * `parts(4i)`, as [[classify]] writes an item's one part.
+    * `parts(4i)` (low u, high u, low v, high v), where an item on one face keeps it
+    * ([[classify]]).
     */
   private def partOn(rel: Array[Double], i: Int, f: Int, parts: Array[Double]): Boolean =
     // Why: set by the footprint's body, which runs at most once.

@@ -245,17 +245,7 @@ object Primitives:
       dy: Double,
       dz: Double
   ): Double =
-    val nx  = data(at)
-    val ny  = data(at + 1)
-    val nz  = data(at + 2)
-    val vd  = nx * dx + ny * dy + nz * dz
-    val gap = data(at + 3) - (nx * ox + ny * oy + nz * oz)
-    // Perf: a plane behind the ray or parallel to it refused before the division
-    // (Mesh.faceDistance).
-    if !((gap > 0 && vd > 0) || (gap < 0 && vd < 0)) then Double.PositiveInfinity
-    else
-      val t = gap / vd
-      if t > 0 then t else Double.PositiveInfinity
+    Kernel.planeT(data(at), data(at + 1), data(at + 2), data(at + 3), ox, oy, oz, dx, dy, dz)
 
   /** Shape.sphereDistance on flat data: equations 17–21. */
   private inline def sphere(
