@@ -282,3 +282,35 @@ class KernelProperties extends ScalaCheckSuite:
         assertEquals(found.length, 4, s"$rs: $found")
         found.zip(rs.sorted).foreach((x, r) => assert(Math.abs(x - r) < 1e-9, s"$x for $r"))
     }
+
+  property("the plane test refuses by the signs exactly what the division's sign refuses"):
+    // Values where the sign test and the division could part: zeros of both signs, infinities,
+    // NaN, the smallest subnormals (a quotient that underflows to 0) and ordinary ones.
+    val special = Gen.oneOf(
+      0.0,
+      -0.0,
+      Double.MinPositiveValue,
+      -Double.MinPositiveValue,
+      1e-300,
+      -1e-300,
+      Double.MaxValue,
+      Double.PositiveInfinity,
+      Double.NegativeInfinity,
+      Double.NaN
+    )
+    val value = Gen.frequency(1 -> special, 3 -> Gen.choose(-5.0, 5.0))
+    forAll(value, value, value, value, value, value) { (n, d, o, dir, other, scale) =>
+      // A plane of normal (n, 0, 0) at distance d, a ray from (o, other, scale) along (dir, 1, 0):
+      // the old formula, (D − Pn·O) / (Pn·d) when Pn·d ≠ 0 and the quotient is positive.
+      val vd       = n * dir + 0.0 * 1.0 + 0.0 * 0.0
+      val expected =
+        if vd == 0 then Double.PositiveInfinity
+        else
+          val t = (d - (n * o + 0.0 * other + 0.0 * scale)) / vd
+          if t > 0 then t else Double.PositiveInfinity
+      val got = Kernel.planeT(n, 0.0, 0.0, d, o, other, scale, dir, 1.0, 0.0)
+      assertEquals(
+        java.lang.Double.doubleToLongBits(got),
+        java.lang.Double.doubleToLongBits(expected)
+      )
+    }
