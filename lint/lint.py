@@ -6,7 +6,8 @@
 Runs semgrep with lint/semgrep.yml over the Scala sources (default: src, demo/src, bench/src),
 then applies the project's rules for what a finding may stand on:
 
-  - A keyword rule's hit (null, return, var, while, throw, asInstanceOf, isInstanceOf: semgrep
+  - A keyword rule's hit (null, return, var, while, throw, asInstanceOf, isInstanceOf, and the
+    boxing isNaN and isInfinite: semgrep
     finds them by pattern-regex) counts only in code: hits inside comments and string literals are
     dropped. These words are reserved in Scala (or, for the casts, members no one else names), so
     a token scan is exact where semgrep's Scala parser is not (it reads a `val` as a variable).
@@ -56,6 +57,7 @@ KEYWORD_RULES = {
     "var-without-why",
     "while-without-why",
     "throw-without-why",
+    "boxed-nan-test",
 }
 WHY_RULES = {"var-without-why", "while-without-why", "throw-without-why"}
 WHY = re.compile(r"//\s*(Why|Perf):\s*(\S.*?)\s*$")

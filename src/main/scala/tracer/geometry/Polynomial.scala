@@ -96,7 +96,7 @@ object Polynomial:
       k = 0
       while k <= m && found < wanted do
         val x = rootOn(s, at, len, n, s(ends + k), s(ends + k + 1))
-        if !x.isNaN then
+        if !java.lang.Double.isNaN(x) then
           // `distinct`: a root already found is not written again. Equal as Scala's `==` on
           // doubles says, as `distinct` compares them: 0.0 and -0.0 are one root.
           var j = 0

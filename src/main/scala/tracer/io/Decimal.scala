@@ -9,7 +9,7 @@ private[io] object Decimal:
     * numbers, and a regex matcher per number was a sixth of the loading's allocation
     * (docs/performance.md).
     */
-  def matches(text: String): Boolean = !parse(text).isNaN
+  def matches(text: String): Boolean = !java.lang.Double.isNaN(parse(text))
 
   /** The value of `text` read as [[matches]] accepts it, or NaN when it is not such a number.
     * Exactly `java.lang.Double.parseDouble(text)` for every accepted text (so it may be ±∞ for a
@@ -92,7 +92,7 @@ private[io] object Decimal:
         else if mantissa <= (1L << 53) && power < 0 && power >= -22 then
           mantissa.toDouble / Powers(-power)
         else EiselLemire.toDouble(mantissa, power)
-      if exact.isNaN then java.lang.Double.parseDouble(slow)
+      if java.lang.Double.isNaN(exact) then java.lang.Double.parseDouble(slow)
       else if negative then -exact
       else exact
 

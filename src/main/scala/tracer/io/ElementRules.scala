@@ -201,7 +201,8 @@ private[io] object ElementRules:
         requiredNumber(e, key).flatMap { c =>
           if c >= 0 && c <= max then Right(c)
           else
-            val range = if max.isInfinite then "at least 0" else s"from 0 to ${show(max)}"
+            val range =
+              if java.lang.Double.isInfinite(max) then "at least 0" else s"from 0 to ${show(max)}"
             e.fail(s"attribute $key must be $range, got ${show(c)}")
         }
       }

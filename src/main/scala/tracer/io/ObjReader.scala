@@ -326,7 +326,8 @@ private final class ObjParser(reader: Reader, name: String):
   /** Word k as a finite decimal number (Decimal's grammar: no NaN, no hex). */
   private def number(k: Int): Double =
     val value = Decimal.parse(text, starts(k), ends(k))
-    if value.isNaN || value.isInfinite then fail(s"malformed number '${word(k)}'")
+    if java.lang.Double.isNaN(value) || java.lang.Double.isInfinite(value) then
+      fail(s"malformed number '${word(k)}'")
     value
 
   /** Finds the line's words, split at whitespace (`Character.isWhitespace`); a trailing comment

@@ -94,7 +94,7 @@ private[io] final class SurfaceReader(
       case c :: Nil if c.name == "colour" || c.name == "color" => ElementRules.colour(c, 1).toOption
       case _                                                   => None
     val numbers = List(diffuse, reflection, phong, phongSize, specular, roughness, transmit, ior)
-    val inRange = !numbers.exists(_.isNaN)
+    val inRange = !numbers.exists(java.lang.Double.isNaN)
     val plain   = e.strayText.isEmpty && present == a.size && inRange &&
       (place.iorRefusal.isEmpty || !a.contains("ior"))
     for colour <- pigment if plain

@@ -83,7 +83,7 @@ final class LightBuffer private (
     val nu = sizes(3 * f)
     val ru = (u - windows(4 * f)) * windows(4 * f + 2)
     val rv = (v - windows(4 * f + 1)) * windows(4 * f + 3)
-    if ru.isNaN || rv.isNaN then LightBuffer.Walk
+    if java.lang.Double.isNaN(ru) || java.lang.Double.isNaN(rv) then LightBuffer.Walk
     else if nu == 0 || ru < 0 || rv < 0 || u > highs(2 * f) || v > highs(2 * f + 1) then
       LightBuffer.Outside
     else
@@ -361,7 +361,7 @@ object LightBuffer:
     * part: [[count]] and [[place]] ask the same.
     */
   private inline def outlined(outlines: Array[Double], i: Int): Boolean =
-    outlines.nonEmpty && !outlines(7 * i).isNaN
+    outlines.nonEmpty && !java.lang.Double.isNaN(outlines(7 * i))
 
   /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), keeping an
     * outlined item's cells of each column in `columns`, or when it covers more than `widest`

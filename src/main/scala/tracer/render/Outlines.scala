@@ -23,7 +23,7 @@ private[render] object Outlines:
       corners: Array[Double],
       i: Int
   ): Unit =
-    if absolute(9 * from).isNaN then corners(10 * i) = Double.NaN
+    if java.lang.Double.isNaN(absolute(9 * from)) then corners(10 * i) = Double.NaN
     else
       // Perf: a call an item, as LightBuffer.build's loops.
       var largest = 0.0
@@ -57,7 +57,7 @@ private[render] object Outlines:
       outlines: Array[Double]
   ): Unit =
     outlines(7 * i) = Double.NaN
-    if f >= 0 && !corners(10 * i).isNaN then
+    if f >= 0 && !java.lang.Double.isNaN(corners(10 * i)) then
       val a     = f >> 1
       val b     = (a + 1) % 3
       val c     = (a + 2) % 3

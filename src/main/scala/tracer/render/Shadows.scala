@@ -328,7 +328,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   /** The `transmit` of the surface that crossing `k` of the clear shape at `place` shows. */
   private inline def transmitAt(place: Int, k: Int): Double =
     val whole = world.clearTransmits(place)
-    if !whole.isNaN then whole
+    if !java.lang.Double.isNaN(whole) then whole
     else world.surface(world.clearShapes(place), crossed.leafAt(k)).transmit
 
   /** [[clearShare]] of several clear shapes: at each step the nearest next crossing of any. */
@@ -508,7 +508,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       dz: Double,
       limit: Double
   ): Boolean =
-    if b(at).isNaN then true
+    if java.lang.Double.isNaN(b(at)) then true
     else
       val ix = 1 / dx
       val iy = 1 / dy
@@ -655,7 +655,7 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     val b   = world.boxes
     val at  = 6 * i
     val lox = b(at)
-    if lox.isNaN then
+    if java.lang.Double.isNaN(lox) then
       world.shape(i) match
         case plane: Plane =>
           val n = plane.normal

@@ -339,7 +339,7 @@ object PathTracer:
         if Math.max(out.fr, Math.max(out.fg, out.fb)) > 0 then
           val density = out.lightDensity
           val reach   =
-            if density == 0 || out.distance.isInfinite then out.distance
+            if density == 0 || java.lang.Double.isInfinite(out.distance) then out.distance
             else out.distance - 2 * Shading.Epsilon
           val share = visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
           if share > 0 then
