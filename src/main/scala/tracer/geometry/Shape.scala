@@ -198,10 +198,10 @@ final class Mesh(
     Mesh.plane(vertices, corners, f)((nx, ny, nz, _) => Vec3(nx, ny, nz))
 
   /** True when face `f` shades with its corners' normals interpolated. */
-  def smoothFace(f: Int): Boolean = cornerNormals.nonEmpty && cornerNormals(3 * f) >= 0
+  def smoothFace(f: Int): Boolean = cornerNormals.length > 0 && cornerNormals(3 * f) >= 0
 
   /** True when face `f` has texture coordinates at its corners. */
-  def texturedFace(f: Int): Boolean = cornerUvs.nonEmpty && cornerUvs(3 * f) >= 0
+  def texturedFace(f: Int): Boolean = cornerUvs.length > 0 && cornerUvs(3 * f) >= 0
 
   /** Face `f` as the triangle it stands for: its corners, texture coordinates and normals. */
   def face(f: Int): Triangle =

@@ -104,7 +104,7 @@ private[io] final class MeshBuilder(obj: ObjMesh, place: MeshTransform, smooth: 
         val f = faces(k)
         // The file's normals where the face has them, else (auto) the computed ones.
         val source =
-          if fromFile.nonEmpty && fromFile(3 * f) >= 0 then
+          if fromFile.length > 0 && fromFile(3 * f) >= 0 then
             Some((fromFile(3 * f), fromFile(3 * f + 1), fromFile(3 * f + 2)))
           else if smooth == Smooth.Auto then
             val (i, j, l) = (obj.corners(3 * f), obj.corners(3 * f + 1), obj.corners(3 * f + 2))

@@ -63,8 +63,8 @@ final case class ObjMesh(
       vertex(a),
       vertex(b),
       vertex(c),
-      Option.when(textureCorners.nonEmpty && textureCorners(3 * k) >= 0)((uv(0), uv(1), uv(2))),
-      Option.when(normalCorners.nonEmpty && normalCorners(3 * k) >= 0)(
+      Option.when(textureCorners.length > 0 && textureCorners(3 * k) >= 0)((uv(0), uv(1), uv(2))),
+      Option.when(normalCorners.length > 0 && normalCorners(3 * k) >= 0)(
         (normal(0), normal(1), normal(2))
       ),
       (a, b, c)

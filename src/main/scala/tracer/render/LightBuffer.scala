@@ -154,7 +154,7 @@ object LightBuffer:
     // widened (World.widen); NaN at 10i for an item that is not a triangle (none at all for
     // items without corners).
     val corners =
-      if items.corners.isEmpty then Array.emptyDoubleArray else new Array[Double](10 * n)
+      if items.corners.length == 0 then Array.emptyDoubleArray else new Array[Double](10 * n)
     // Perf: as above. The sorted boxes relative to the light, and the scene's size seen from
     // it: the farthest finite box corner.
     var extent = 0.0
@@ -197,7 +197,7 @@ object LightBuffer:
       val e = Math.abs(d)
       if e > extent && e < Double.PositiveInfinity then extent = e
       j += 1
-    if corners.nonEmpty then Outlines.relativeCorners(items.corners, from, lx, ly, lz, corners, i)
+    if corners.length > 0 then Outlines.relativeCorners(items.corners, from, lx, ly, lz, corners, i)
     extent
 
   /** Sorts `keys`, each a non-negative `Int` in its high 32 bits above its index in `keys` in its
@@ -278,7 +278,7 @@ object LightBuffer:
     // A triangle on one face: its corners' (u, v) at 7i, and its margin at 7i + 6
     // (Outlines.outline); NaN at 7i for any other item, binned by its box's part alone (none at
     // all without corners).
-    val outlines = if corners.isEmpty then Array.emptyDoubleArray else new Array[Double](7 * n)
+    val outlines = if corners.length == 0 then Array.emptyDoubleArray else new Array[Double](7 * n)
     // Perf: as build; an item's one part is found once, not in each of the three passes. Each
     // pass's work on one item is a small method of its own, called once an item: a method is
     // compiled after a few hundred calls, where these loops written out in one method of 6.8 KB
@@ -287,7 +287,7 @@ object LightBuffer:
     var i = 0
     while i < n do
       classify(rel, gaps, i, near, on, parts)
-      if outlines.nonEmpty then Outlines.outline(corners, on(i), i, parts, outlines)
+      if outlines.length > 0 then Outlines.outline(corners, on(i), i, parts, outlines)
       i += 1
     val (windows, highs, sizes) = grids(rel, n, on, parts)
     val cells                   = sizes(18)
@@ -301,7 +301,7 @@ object LightBuffer:
     // reading them; listing every cell instead cost as many ints as the buffer's entries (57 a
     // face of the 1.3M-face mesh at 3840×2160; docs/performance.md, round 35).
     val start   = new Array[Int](cells + 1)
-    val columns = Columns(if outlines.isEmpty then 0 else 4 * n)
+    val columns = Columns(if outlines.length == 0 then 0 else 4 * n)
     i = 0
     while i < n do
       count(rel, on, parts, outlines, i, windows, sizes, widest, start, columns)
@@ -361,7 +361,7 @@ object LightBuffer:
     * part: [[count]] and [[place]] ask the same.
     */
   private inline def outlined(outlines: Array[Double], i: Int): Boolean =
-    outlines.nonEmpty && !java.lang.Double.isNaN(outlines(7 * i))
+    outlines.length > 0 && !java.lang.Double.isNaN(outlines(7 * i))
 
   /** Counts item `i` into each of its cells (cell c's count at `start(c + 1)`), keeping an
     * outlined item's cells of each column in `columns`, or when it covers more than `widest`
