@@ -242,19 +242,19 @@ final class Bvh(
     val corners = if outlines then new Array[Double](9 * n) else Array.emptyDoubleArray
     // Why: the next item's number.
     var i = 0
-    // Perf: counted loops over the primitives and faces, no `Range` closure boxing each number
-    // (4 MB of `Integer`s for 80,000 faces, made while this code is still cold; round 37).
+    // Perf: counted loops over the primitives, no `Range` closure boxing each number (4 MB of
+    // `Integer`s for 80,000 faces, made while this code is still cold), and a big mesh's faces in
+    // parts on the pool, as the tree's passes over them (18 ms on one thread, cold, for 80,000
+    // faces, while the pool waited; docs/performance.md, round 37).
     var k = 0
     while k < prims.size do
       if prims.kind(k) == Primitives.MeshKind then
-        val mesh = prims.meshes(prims.data(Primitives.Stride * k).toInt)
-        var f    = 0
-        while f < mesh.faceCount do
-          mesh.faceBox(f, boxes, 6 * i)
-          if outlines then mesh.faceCorners(f, corners, 9 * i)
-          owner(i) = k; face(i) = f
-          i += 1
-          f += 1
+        val mesh  = prims.meshes(prims.data(Primitives.Stride * k).toInt)
+        val first = i
+        BvhBuilder.inParts(mesh.faceCount, pool)((from, to) =>
+          Bvh.faceItems(mesh, k, first, from, to, boxes, owner, face, corners)
+        )
+        i += mesh.faceCount
       else
         // The tree holds only bounded shapes; a box without bounds would be tested on every ray.
         val inf      = Double.PositiveInfinity
@@ -264,6 +264,7 @@ final class Bvh(
           .fold((Vec3(-inf, -inf, -inf), Vec3(inf, inf, inf)))(b => (b.lo, b.hi))
         boxes(6 * i) = lo.x; boxes(6 * i + 1) = lo.y; boxes(6 * i + 2) = lo.z
         boxes(6 * i + 3) = hi.x; boxes(6 * i + 4) = hi.y; boxes(6 * i + 5) = hi.z
+        World.widen(boxes, 6 * i)
         shape match
           case t: Triangle if outlines =>
             for (c, j) <- Seq(t.t0, t.t1, t.t2).zipWithIndex do
@@ -273,10 +274,6 @@ final class Bvh(
         owner(i) = k; face(i) = -1
         i += 1
       k += 1
-    var j = 0
-    while j < n do
-      World.widen(boxes, 6 * j)
-      j += 1
     BufferItems(boxes, owner, face, corners)
 
   /** True when one of the items `list(from until to)` of light buffer `buffer` (built over
@@ -674,6 +671,31 @@ private[render] object BvhWalk:
 
 /** Construction constants of [[Bvh]]. */
 object Bvh:
+  /** Writes faces `from` until `to` of `mesh`, primitive `k` of a tree, as [[Bvh.bufferItems]]'
+    * items `first + from` until `first + to`: each face's widened box, owner and face, and its
+    * corners when `corners` is not empty.
+    */
+  private def faceItems(
+      mesh: MeshTree,
+      k: Int,
+      first: Int,
+      from: Int,
+      to: Int,
+      boxes: Array[Double],
+      owner: Array[Int],
+      face: Array[Int],
+      corners: Array[Double]
+  ): Unit =
+    // Perf: a counted loop over one part of the faces.
+    var f = from
+    while f < to do
+      val i = first + f
+      mesh.faceBox(f, boxes, 6 * i)
+      World.widen(boxes, 6 * i)
+      if corners.length > 0 then mesh.faceCorners(f, corners, 9 * i)
+      owner(i) = k; face(i) = f
+      f += 1
+
   /** The scratch stack size a query needs: a wide node pushes at most four slots for the one it
     * pops, at most [[BvhBuilder.MaxDepth]] + 1 deep, so 3 × 129 + 4 slots at most.
     */

@@ -203,6 +203,30 @@ class MeshProperties extends ScalaCheckSuite:
         assert(wide.count.sameElements(narrow.count))
     finally pool.shutdown()
 
+  test("a big mesh's buffer items, made in parts on a pool, are those made on one thread"):
+    val m = BufferWorlds.terrain(190, 0, 0.3)
+    assert(m.faceCount >= BvhBuilder.ParallelFrom)
+    val shapes = IndexedSeq[Shape](
+      Sphere(Vec3(0, 2, 0), 0.5),
+      m,
+      Triangle(Vec3(0, 3, 0), Vec3(1, 3, 0), Vec3(0, 3, 1))
+    )
+    val pool = Executors.newFixedThreadPool(3)
+    try
+      for outlines <- List(true, false) do
+        val parallel =
+          Bvh(shapes, Some(ExecutionContext.fromExecutorService(pool))).bufferItems(outlines)
+        val serial = Bvh(shapes).bufferItems(outlines)
+        assertEquals(parallel.size, m.faceCount + 2)
+        assert(parallel.boxes.sameElements(serial.boxes))
+        assert(parallel.owner.sameElements(serial.owner))
+        assert(parallel.face.sameElements(serial.face))
+        assertEquals(
+          parallel.corners.toList.map(java.lang.Double.doubleToRawLongBits),
+          serial.corners.toList.map(java.lang.Double.doubleToRawLongBits)
+        )
+    finally pool.shutdown()
+
   test("a world whose area lights test shapes by beam builds each mesh's tree once"):
     val m     = Mesh(IArray(0.0, 0, 0, 1, 0, 0, 0, 1, 0), IArray(0, 1, 2))
     val light = tracer.scene.Light(
