@@ -376,10 +376,12 @@ final class World(
     // Perf: the unbounded shapes first (their nearest distance left in query.distance), then the
     // hierarchy, pruned by the nearest of them, or for a ray from the camera, its buffer. Each
     // step is a method of its own, so this one is small and has no loop: the JIT compiles it
-    // once, quickly (docs/performance.md, round 9).
+    // once, quickly (docs/performance.md, round 9). `length == 0`, not `isEmpty`: an IArray's
+    // isEmpty asks java.lang.reflect.Array.getLength, a native call a ray until C2 has compiled
+    // this (round 37).
     val best   = nearestUnbounded(ox, oy, oz, dx, dy, dz, limit, query)
     val winner =
-      if eyes.isEmpty then bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
+      if eyes.length == 0 then bvh.nearest(ox, oy, oz, dx, dy, dz, query.distance, best, query)
       else nearestBounded(ox, oy, oz, dx, dy, dz, best, query)
     if winner == Int.MaxValue then
       query.distance = Double.PositiveInfinity
