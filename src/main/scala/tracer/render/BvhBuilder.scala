@@ -238,8 +238,8 @@ private[render] final class BvhBuilder private (
     // Why: as cl0.
     var ch0, ch1, ch2 = Double.NegativeInfinity
     val nb            = 6 * node
-    for a <- 0 until 3 do
-      boxes(nb + a) = Float.PositiveInfinity; boxes(nb + 3 + a) = Float.NegativeInfinity
+    java.util.Arrays.fill(boxes, nb, nb + 3, Float.PositiveInfinity)
+    java.util.Arrays.fill(boxes, nb + 3, nb + 6, Float.NegativeInfinity)
     var k = start
     while k < end do
       var a = 0
