@@ -388,19 +388,11 @@ object LightBuffer:
       )
       if span > widest then on(i) = OnAlways
       else
-        cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
-          var cu = cu0
-          while cu <= cu1 do
-            val cells =
-              if outlined(outlines, i) then
-                columns.keep(Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1))
-              else Outlines.span(cv0, cv1)
-            var cv = (cells >> 32).toInt
-            while cv <= cells.toInt do
-              start(base + cu * nv + cv + 1) += 1
-              cv += 1
-            cu += 1
-        }
+        eachCell(rel, on, parts, i, windows, sizes) { (f, cu, cv0, cv1) =>
+          if outlined(outlines, i) then
+            columns.keep(Outlines.column(outlines, i, windows, sizes, f, cu, cv0, cv1))
+          else Outlines.span(cv0, cv1)
+        }(cell => start(cell + 1) += 1)
 
   /** Places item `i` in each of its cells, at `next(c)` of `items` for cell c, and moves each such
     * `next` on, an outlined item's cells of each column read back from `columns` in the order
@@ -419,19 +411,38 @@ object LightBuffer:
       columns: Columns
   ): Unit =
     if on(i) != OnNone then
-      cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, _) =>
-        // Perf: as binned.
-        var cu = cu0
-        while cu <= cu1 do
-          val cells = if outlined(outlines, i) then columns.next() else Outlines.span(cv0, cv1)
-          var cv    = (cells >> 32).toInt
-          while cv <= cells.toInt do
-            val cell = base + cu * nv + cv
-            items(next(cell)) = i
-            next(cell) += 1
-            cv += 1
-          cu += 1
+      eachCell(rel, on, parts, i, windows, sizes) { (_, _, cv0, cv1) =>
+        if outlined(outlines, i) then columns.next() else Outlines.span(cv0, cv1)
+      } { cell =>
+        items(next(cell)) = i
+        next(cell) += 1
       }
+
+  /** Runs `body` on each cell of item `i`, column by column of each part of a face it covers:
+    * the cells along v of column `cu` of face `f` are those `column(f, cu, cv0, cv1)` answers
+    * (first in the high 32 bits, last in the low), within the part's `cv0` to `cv1`.
+    *
+    * Perf: both inline, so [[count]] and [[place]] each compile to plain loops, as written out.
+    */
+  private inline def eachCell(
+      rel: Array[Double],
+      on: Array[Byte],
+      parts: Array[Double],
+      i: Int,
+      windows: Array[Double],
+      sizes: Array[Int]
+  )(inline column: (Int, Int, Int, Int) => Long)(inline body: Int => Unit): Unit =
+    cellsOf(rel, on, parts, i, windows, sizes) { (cu0, cu1, cv0, cv1, base, nv, f) =>
+      // Perf: as binned.
+      var cu = cu0
+      while cu <= cu1 do
+        val cells = column(f, cu, cv0, cv1)
+        var cv    = (cells >> 32).toInt
+        while cv <= cells.toInt do
+          body(base + cu * nv + cv)
+          cv += 1
+        cu += 1
+    }
 
   /** The outlined items' cells of each column, as [[Outlines.column]] answers them: kept in
     * order by [[count]], read back in the same order by [[place]].
