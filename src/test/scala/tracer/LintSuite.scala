@@ -58,6 +58,31 @@ class LintSuite extends munit.FunSuite:
       assert(out.contains("src/main/scala/x/Bad.scala:5:28: no-as-instance-of:"), out)
       assert(!out.contains("Good.scala"), out)
 
+  scratch.test("x.isNaN and x.isInfinite fail in main code; java.lang.Double's tests do not"): d =>
+    write(
+      d,
+      "src/main/scala/x/Nan.scala",
+      """package x
+          |
+          |object Nan:
+          |  def bad(x: Double): Boolean = x.isNaN || x.isInfinite
+          |  def good(x: Double): Boolean = java.lang.Double.isNaN(x) // not x.isNaN
+          |  val text = "x.isNaN in a string"
+          |""".stripMargin
+    )
+    write(
+      d,
+      "src/test/scala/x/NanSuite.scala",
+      "package x\n\nobject NanSuite:\n  def t(x: Double): Boolean = x.isNaN\n"
+    )
+    val (status, out) = lint(d, "src")
+    assertEquals(status, 1, out)
+    assert(out.contains("src/main/scala/x/Nan.scala:4:34: boxed-nan-test:"), out)
+    assert(out.contains("src/main/scala/x/Nan.scala:4:45: boxed-nan-test:"), out)
+    assert(!out.contains("Nan.scala:5:"), out)
+    assert(!out.contains("Nan.scala:6:"), out)
+    assert(!out.contains("NanSuite.scala"), out)
+
   scratch.test("var, while and throw stand exactly where a Why: or Perf: comment covers them"): d =>
     write(
       d,
