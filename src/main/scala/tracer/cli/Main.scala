@@ -3,7 +3,7 @@ package tracer.cli
 import java.io.{FileDescriptor, FileInputStream, InputStream, PrintStream}
 import java.nio.file.Path
 import scala.util.control.NonFatal
-import tracer.image.{Bitmap, ImageFile, ImageFormat}
+import tracer.image.{Bitmap, ImageFile, ImageFormat, PngStream}
 import tracer.io.{Images, OutputFile, SceneSources}
 import tracer.render.{CameraConfig, Film, Integrator, Renderer, SamplerKind, ShadingMode}
 import tracer.scene.Scene
@@ -107,16 +107,54 @@ object Main:
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)
-      threads           = options.threads.getOrElse(Renderer.defaultThreads)
-      (picture, millis) = timed(
-        withProgress(err, band.size)(onRow =>
-          // .pfm and .exr hold the linear values; the 8-bit formats the range rule and -g.
-          if format.isFloat then Left(Renderer.renderRaster(scene, config, threads, onRow, band))
-          else Right(Renderer.render(scene, config, threads, onRow, band))
-        )
+      threads         = options.threads.getOrElse(Renderer.defaultThreads)
+      (drawn, millis) = timed(
+        withProgress(err, band.size)(onRow => draw(scene, config, threads, onRow, band, format))
       )
-      _ <- picture.fold(Images.save(_, output), Images.save(_, output, threads)).left.map(failure)
-    yield millis
+      _ <- drawn.save(output).left.map(failure)
+    yield Math.max(0L, millis - drawn.encodingNanos / threads / 1000000)
+
+  /** A rendered picture: how to save it, and how long the render's threads spent encoding its
+    * file while they rendered (nanoseconds, summed over the threads), which the render's time
+    * leaves out.
+    */
+  private final class Drawn(val save: Path => Either[String, Unit], val encodingNanos: Long = 0)
+
+  /** Renders the picture for a file of `format` and returns how to save it: a `.pfm` or `.exr`
+    * holds the linear values; the 8-bit formats the range rule and `-g`, and a PNG's bands are
+    * deflated while the render goes on ([[PngStream]]), so little of it is left to do after (the
+    * time its threads spent on them is returned too, for `-t`).
+    */
+  private def draw(
+      scene: Scene,
+      config: CameraConfig,
+      threads: Int,
+      onRow: () => Unit,
+      band: Range,
+      format: ImageFormat
+  ): Drawn =
+    format match
+      case ImageFormat.Pfm | ImageFormat.Exr =>
+        val raster = Renderer.renderRaster(scene, config, threads, onRow, band)
+        Drawn(Images.save(raster, _))
+      case ImageFormat.Png =>
+        val picture = Bitmap.Builder(config.columns, band.size)
+        val png     = PngStream(picture)
+        Renderer.renderInto(
+          scene,
+          config,
+          picture,
+          threads,
+          (at, count) =>
+            (0 until count).foreach(_ => onRow())
+            png.rowsDone(at, count)
+          ,
+          band
+        )
+        Drawn(Images.save(png, _, threads), png.encodingNanos)
+      case ImageFormat.Ppm =>
+        val bitmap = Renderer.render(scene, config, threads, onRow, band)
+        Drawn(Images.save(bitmap, _, threads))
 
   /** Refuses `-g` (any value, even 1) with a floating-point output: `.pfm` and `.exr` hold the
     * linear values, which no encoding touches.

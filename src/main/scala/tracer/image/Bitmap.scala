@@ -98,12 +98,26 @@ object Bitmap:
     * have completed (its Future awaited). Each row is written by one thread.
     */
   def byRows(width: Int, height: Int, maxval: Int = 255)(fill: PixelWriter => Unit): Bitmap =
-    val samples = allocate(width, height, maxval)
+    val builder = Builder(width, height, maxval)
+    fill(builder)
+    builder.result
+
+  /** A bitmap being filled pixel by pixel, as [[byRows]] fills one: rows may be stored from
+    * several threads at once, each row by one, and [[result]] is the bitmap once every pixel is
+    * stored. Its rows can be read as they are finished (the PNG encoder's [[PngStream]]).
+    */
+  final class Builder(val width: Int, val height: Int, val maxval: Int = 255) extends PixelWriter:
     // Perf: each row is written once into the final array, by whichever thread computes it; the
-    // rows are disjoint, and `fill` returns only after every row is done (Renderer awaits them).
-    // The pixel comes as three doubles: no Colour a pixel (RenderBench).
-    fill((x, y, r, g, b) => storeRgb(samples, 3 * (y * width + x), r, g, b, maxval))
-    new Bitmap(width, height, maxval, samples)
+    // rows are disjoint, and the bitmap is made only after every row is done (Renderer awaits
+    // them). The pixel comes as three doubles: no Colour a pixel (RenderBench).
+    private[image] val samples: Array[Char] = allocate(width, height, maxval)
+
+    /** Stores pixel (x, y) as the colour (r, g, b), brought into range as [[Colour.inRange]] does. */
+    def put(x: Int, y: Int, r: Double, g: Double, b: Double): Unit =
+      storeRgb(samples, 3 * (y * width + x), r, g, b, maxval)
+
+    /** The bitmap of the stored pixels. It shares the builder's samples: store nothing after. */
+    def result: Bitmap = new Bitmap(width, height, maxval, samples)
 
   /** A bitmap of one colour. */
   def fill(width: Int, height: Int, colour: Colour, maxval: Int = 255): Bitmap =

@@ -19,7 +19,26 @@ private[image] object PngWriter:
     * does it all); the bytes are the same for any number.
     */
   def write(bitmap: Bitmap, out: OutputStream, workers: Int): Unit =
-    val (w, h) = (bitmap.width, bitmap.height)
+    val picture = Picture(bitmap.width, bitmap.height, bitmap.maxval, Bitmap.samplesOf(bitmap))
+    writeBands(picture, out, workers)(_ => None)
+
+  /** A bitmap's size, depth and samples, as the encoder reads them (a finished [[Bitmap]] or the
+    * samples of a [[Bitmap.Builder]]).
+    */
+  private[image] final class Picture(
+      val width: Int,
+      val height: Int,
+      val maxval: Int,
+      val samples: Array[Char]
+  )
+
+  /** Writes `picture` as a PNG: each band `ready` gives as it is, the others encoded on up to
+    * `workers` threads besides this one, all written in order, one IDAT chunk a band.
+    */
+  private[image] def writeBands(picture: Picture, out: OutputStream, workers: Int)(
+      ready: Int => Option[Band]
+  ): Unit =
+    val (w, h) = (picture.width, picture.height)
     out.write(Signature)
     // IHDR: size, 8 bits a sample, colour type 2 (RGB), deflate, adaptive filtering, no interlace.
     chunk(out, "IHDR") { d =>
@@ -30,27 +49,50 @@ private[image] object PngWriter:
     // (as pigz does), and this thread writes them in order, one IDAT chunk a band: the serial
     // level-6 deflate took 0.8 s of a 3840×2160 run (docs/performance.md, rounds 10 and 11). A band
     // depends only on the bitmap, so the file is the same bytes whatever the number of threads.
-    val bands                          = (h + BandRows - 1) / BandRows
-    val adler                          = Adler32()
+    val bands = bandCount(h)
+    // Why: the Adler-32 of the filtered bytes so far, each band's own folded in as it is written.
+    var adler                          = 1L
     def emit(b: Int, band: Band): Unit =
-      adler.update(band.filtered)
+      adler = Adler.combine(adler, band.adler, band.length)
       val head = if b == 0 then ZlibHeader else Array.emptyByteArray
       val tail = if b == bands - 1 then checksum(adler) else Array.emptyByteArray
       chunk(out, "IDAT") { d => d.write(head); d.write(band.deflated); d.write(tail) }
-    if bands <= 1 || workers <= 1 then (0 until bands).foreach(b => emit(b, encodeBand(bitmap, b)))
+    val missing = (0 until bands).count(ready(_).isEmpty)
+    if missing <= 1 || workers <= 1 then
+      (0 until bands).foreach(b => emit(b, ready(b).getOrElse(encodeBand(picture, b))))
     else
-      val pool    = Executors.newFixedThreadPool(Math.min(workers, bands), EncoderThreads)
-      val pending = (0 until bands).map(b => pool.submit(() => encodeBand(bitmap, b)))
-      try pending.indices.foreach(b => emit(b, pending(b).get()))
+      val pool    = Executors.newFixedThreadPool(Math.min(workers, missing), EncoderThreads)
+      val pending =
+        (0 until bands).map(b => ready(b).toLeft(pool.submit(() => encodeBand(picture, b))))
+      try pending.indices.foreach(b => emit(b, pending(b).fold(identity, _.get())))
       finally pool.shutdownNow(): Unit
     chunk(out, "IEND")(_ => ())
     out.flush()
 
   /** Rows a band holds: filtered and deflated on one worker, written as one IDAT chunk. */
-  private val BandRows = 32
+  private[image] val BandRows = 32
 
-  /** A band of rows: its filtered bytes (for the stream's checksum) and their deflated form. */
-  private final class Band(val filtered: Array[Byte], val deflated: Array[Byte])
+  /** The number of bands of a picture `height` rows high. */
+  private[image] def bandCount(height: Int): Int = (height + BandRows - 1) / BandRows
+
+  /** The row after band `b`'s last. */
+  private[image] def bandEnd(picture: Picture, b: Int): Int =
+    Math.min(picture.height, (b + 1) * BandRows)
+
+  /** The rows before band `b` whose filtered bytes are its dictionary ([[encodeBand]]). */
+  private def dictionaryRows(picture: Picture, b: Int): Int =
+    Math.min(b * BandRows, (Window + 3 * picture.width) / (3 * picture.width + 1))
+
+  /** The first row that encoding band `b` reads: the row above its dictionary's first, whose
+    * bytes the Up filter of that row needs (row 0 has none).
+    */
+  private[image] def firstRead(picture: Picture, b: Int): Int =
+    Math.max(0, b * BandRows - dictionaryRows(picture, b) - 1)
+
+  /** A band of rows: the Adler-32 and length of its filtered bytes (the stream's checksum is
+    * made of the bands' own), and their deflated form.
+    */
+  private[image] final class Band(val adler: Long, val length: Int, val deflated: Array[Byte])
 
   /** The deflate level: 4, where zlib's default is 6.
     *
@@ -75,20 +117,20 @@ private[image] object PngWriter:
   /** The deflate window: a band's dictionary is the stream's last this many bytes before it. */
   private val Window = 32768
 
-  /** Band `b` of `bitmap`, filtered, and deflated as the next piece of one raw deflate stream: the
-    * stream's preceding 32 KiB (the tail of the rows before, filtered again here) as its dictionary,
-    * ended by a sync flush (byte-aligned, so pieces join), or by the final block for the last band.
+  /** Band `b` of `picture`, filtered, and deflated as the next piece of one raw deflate stream:
+    * the stream's preceding 32 KiB (the tail of the rows before, filtered again here) as its
+    * dictionary, ended by a sync flush (byte-aligned, so pieces join), or by the final block for
+    * the last band.
     */
-  private def encodeBand(bitmap: Bitmap, b: Int): Band =
+  private[image] def encodeBand(picture: Picture, b: Int): Band =
     val from     = b * BandRows
-    val until    = Math.min(bitmap.height, from + BandRows)
-    val last     = until == bitmap.height
-    val filtered = filterBand(bitmap, from, until)
+    val until    = bandEnd(picture, b)
+    val last     = until == picture.height
+    val filtered = filterBand(picture, from, until)
     val deflater = Deflater(Level, true)
     if from > 0 then
       // A row's filtered bytes depend only on it and the row above, so these are the stream's own.
-      val rows  = Math.min(from, (Window + 3 * bitmap.width) / (3 * bitmap.width + 1))
-      val tail  = filterBand(bitmap, from - rows, from)
+      val tail  = filterBand(picture, from - dictionaryRows(picture, b), from)
       val start = Math.max(0, tail.length - Window)
       deflater.setDictionary(tail, start, tail.length - start)
     deflater.setInput(filtered)
@@ -103,20 +145,21 @@ private[image] object PngWriter:
       deflated.write(buffer, 0, n)
       more = if last then !deflater.finished() else n == buffer.length
     deflater.end()
-    Band(filtered, deflated.toByteArray)
+    val adler = Adler32()
+    adler.update(filtered)
+    Band(adler.getValue, filtered.length, deflated.toByteArray)
 
   /** The stream's closing Adler-32 of the filtered bytes, most significant byte first. */
-  private def checksum(adler: Adler32): Array[Byte] =
-    val v = adler.getValue
-    Array((v >>> 24).toByte, (v >>> 16).toByte, (v >>> 8).toByte, v.toByte)
+  private def checksum(adler: Long): Array[Byte] =
+    Array((adler >>> 24).toByte, (adler >>> 16).toByte, (adler >>> 8).toByte, adler.toByte)
 
-  /** Rows `from` until `until` of `bitmap` as 8-bit samples, each row its filter type's byte and
+  /** Rows `from` until `until` of `picture` as 8-bit samples, each row its filter type's byte and
     * the row filtered with [[bestFilter]]'s choice.
     */
-  private def filterBand(bitmap: Bitmap, from: Int, until: Int): Array[Byte] =
-    val stride  = 3 * bitmap.width
-    val samples = Bitmap.samplesOf(bitmap)
-    val maxval  = bitmap.maxval
+  private def filterBand(picture: Picture, from: Int, until: Int): Array[Byte] =
+    val stride  = 3 * picture.width
+    val samples = picture.samples
+    val maxval  = picture.maxval
     val band    = new Array[Byte]((until - from) * (stride + 1))
     // Perf: two row buffers, swapped after each row rather than allocated per row.
     var previous = new Array[Byte](stride)
@@ -134,14 +177,47 @@ private[image] object PngWriter:
       y += 1
     band
 
+  /** Bytes of a row that each call of the filtering's inner loops takes ([[to8Bits]],
+    * [[bestFilter]], [[applyFilter]]).
+    *
+    * Perf: the JIT's second tier (C1 with light profiling, where the start-up cache's profiles
+    * send these methods) counts calls but not a loop's turns (the launcher's
+    * `-XX:Tier2BackedgeNotifyFreqLog=30`), so a loop over a whole row of a 3840-pixel picture,
+    * called twice a row, reached C2 only after about 2,000 rows: most of the picture was filtered
+    * in C1's code. In pieces of this many bytes the same work is 23 calls a row, and C2 compiles
+    * it within the first few hundred (docs/performance.md, round 38).
+    */
+  private val Piece = 512
+
   /** Copies the `row.length` samples from `start` into `row` as 8-bit values. */
   private def to8Bits(samples: Array[Char], start: Int, maxval: Int, row: Array[Byte]): Unit =
+    // Why: the first byte of the next piece.
+    var from = 0
+    while from < row.length do
+      val until = Math.min(row.length, from + Piece)
+      to8BitsPiece(samples, start, maxval, row, from, until)
+      from = until
+
+  /** [[to8Bits]] of bytes `from` until `until` of the row. */
+  private def to8BitsPiece(
+      samples: Array[Char],
+      start: Int,
+      maxval: Int,
+      row: Array[Byte],
+      from: Int,
+      until: Int
+  ): Unit =
     // Perf: a plain loop over the row's samples: the nested for boxed every index (a 1280×720
     // picture allocated 70 MB encoding; JFR allocation samples, docs/performance.md round 3).
-    var i = 0
-    while i < row.length do
-      row(i) = to8Bit(samples(start + i), maxval).toByte
-      i += 1
+    var i = from
+    if maxval == 255 then
+      while i < until do
+        row(i) = samples(start + i).toByte
+        i += 1
+    else
+      while i < until do
+        row(i) = to8Bit(samples(start + i).toInt, maxval).toByte
+        i += 1
 
   /** The PNG filter for `row` below `above`: Sub (1) or Up (2), whichever's filtered bytes, taken
     * as signed values, have the smaller sum of magnitudes; Sub at a tie.
@@ -149,27 +225,44 @@ private[image] object PngWriter:
     * Perf: the usual heuristic tries all five filters (None, Sub, Up, Average, Paeth). Choosing
     * between Sub and Up alone made smaller files on twelve of thirteen pictures measured (the
     * benchmark scenes at 3840×2160 and the gallery at 960×540 1–8% smaller, a noisy path-traced
-    * picture 0.1% smaller and another 0.6% larger), at two table lookups a byte instead of five
-    * and Paeth's predictor; 3840×2160 runs 3–5% sooner (docs/performance.md, round 35).
+    * picture 0.1% smaller and another 0.6% larger), at two magnitudes a byte instead of five and
+    * Paeth's predictor; 3840×2160 runs 3–5% sooner (docs/performance.md, round 35).
     */
   private[image] def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
-    var sub, up = 0L
-    val n       = row.length
-    // Perf: the first pixel's bytes have no left neighbour (Sub predicts 0).
-    var i = 0
-    while i < n && i < 3 do
-      sub += Magnitude(row(i) & 0xff)
-      up += Magnitude((row(i) - above(i)) & 0xff)
-      i += 1
-    while i < n do
-      sub += Magnitude((row(i) - row(i - 3)) & 0xff)
-      up += Magnitude((row(i) - above(i)) & 0xff)
-      i += 1
-    if sub <= up then 1 else 2
+    // Why: Sub's sum of magnitudes minus Up's so far, and the first byte of the next piece.
+    var balance = 0L
+    var from    = 0
+    while from < row.length do
+      val until = Math.min(row.length, from + Piece)
+      balance += weigh(row, above, from, until)
+      from = until
+    if balance <= 0 then 1 else 2
 
-  /** The magnitude of each byte taken as a signed value: `Magnitude(v & 0xff) == |v.toByte|`. */
-  private[image] val Magnitude: Array[Int] =
-    Array.tabulate(256)(v => if v < 128 then v else 256 - v)
+  /** Sub's sum of magnitudes minus Up's over bytes `from` until `until` of `row`. */
+  private def weigh(row: Array[Byte], above: Array[Byte], from: Int, until: Int): Long =
+    // Why: the two sums, and the byte index.
+    var sub, up = 0L
+    var i       = from
+    // Perf: the first pixel's bytes have no left neighbour (Sub predicts 0).
+    while i < until && i < 3 do
+      sub += magnitude(row(i))
+      up += magnitude((row(i) - above(i)).toByte)
+      i += 1
+    while i < until do
+      sub += magnitude((row(i) - row(i - 3)).toByte)
+      up += magnitude((row(i) - above(i)).toByte)
+      i += 1
+    sub - up
+
+  /** |b|, the magnitude of byte `b` taken as a signed value (128 for −128).
+    *
+    * Perf: shifts and an exclusive or, no call or table: the first bands of a render are weighed
+    * before the JIT has compiled this, in the interpreter, where a table read through its
+    * accessor was a call a byte.
+    */
+  private[image] inline def magnitude(b: Byte): Int =
+    val sign = b >> 31
+    (b ^ sign) - sign
 
   /** Writes `row` filtered with PNG filter `filter` (1 Sub, 2 Up: [[bestFilter]]'s choices) into
     * `out` from `at`.
@@ -181,23 +274,42 @@ private[image] object PngWriter:
       out: Array[Byte],
       at: Int
   ): Unit =
-    // Perf: a loop of its own for each filter, Sub's first pixel (no left neighbour) apart, rather
-    // than the filter's and the neighbours' tests on every byte (JFR: applyFilter took 4% of a
-    // 3840×2160 run's samples). Bytes wrap, so x − a is the same byte signed or not.
-    val n = row.length
-    // Why: the byte index of each loop below.
-    var i = 0
-    if filter == 1 then
-      val first = Math.min(n, 3)
-      System.arraycopy(row, 0, out, at, first)
-      i = first
-      while i < n do
-        out(at + i) = (row(i) - row(i - 3)).toByte
-        i += 1
-    else
-      while i < n do
-        out(at + i) = (row(i) - above(i)).toByte
-        i += 1
+    // Perf: Sub's first pixel (no left neighbour) apart, so the pieces' loops test nothing but
+    // their index.
+    val first = Math.min(row.length, 3)
+    if filter == 1 then System.arraycopy(row, 0, out, at, first)
+    // Why: the first byte of the next piece.
+    var from = if filter == 1 then first else 0
+    while from < row.length do
+      val until = Math.min(row.length, from + Piece)
+      if filter == 1 then subPiece(row, out, at, from, until)
+      else upPiece(row, above, out, at, from, until)
+      from = until
+
+  /** Bytes `from` until `until` (from 3 on) of `row` filtered with Sub into `out` from `at`. */
+  private def subPiece(row: Array[Byte], out: Array[Byte], at: Int, from: Int, until: Int): Unit =
+    // Perf: a loop of its own for each filter, rather than the filter's and the neighbours' tests
+    // on every byte (JFR: applyFilter took 4% of a 3840×2160 run's samples). Bytes wrap, so
+    // x − a is the same byte signed or not.
+    var i = from
+    while i < until do
+      out(at + i) = (row(i) - row(i - 3)).toByte
+      i += 1
+
+  /** Bytes `from` until `until` of `row` filtered with Up into `out` from `at`. */
+  private def upPiece(
+      row: Array[Byte],
+      above: Array[Byte],
+      out: Array[Byte],
+      at: Int,
+      from: Int,
+      until: Int
+  ): Unit =
+    // Perf: as subPiece.
+    var i = from
+    while i < until do
+      out(at + i) = (row(i) - above(i)).toByte
+      i += 1
 
   /** Names the encoder's threads and lets the JVM exit without waiting for them. */
   private object EncoderThreads extends ThreadFactory:

@@ -1,7 +1,7 @@
 package tracer.io
 
 import java.nio.file.Path
-import tracer.image.{Bitmap, ImageFile, Png, Raster}
+import tracer.image.{Bitmap, ImageFile, ImageFormat, Png, PngStream, Raster}
 
 /** Image files by name, for the command line and the REPL. */
 object Images:
@@ -22,6 +22,14 @@ object Images:
     val format = ImageFile.formatFor(path.getFileName.toString)
     if format.isFloat then Left(s"cannot write '$path': a $format file holds floats, not samples")
     else OutputFile.write(path)(ImageFile.write(bitmap, format, _, threads))
+
+  /** Writes the PNG `png` encodes to `path` (a `.png` name), whole or not at all, encoding what
+    * is left of it on up to `threads` threads.
+    */
+  def save(png: PngStream, path: Path, threads: Int): Either[String, Unit] =
+    val format = ImageFile.formatFor(path.getFileName.toString)
+    if format != ImageFormat.Png then Left(s"cannot write '$path': a PNG goes to .png, not $format")
+    else OutputFile.write(path)(png.write(_, threads))
 
   /** Writes `raster` to `path` — Portable FloatMap for `.pfm`, OpenEXR for `.exr` (any case) —
     * whole or not at all; any other name is refused.

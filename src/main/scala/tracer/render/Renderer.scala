@@ -28,7 +28,30 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Bitmap =
-    inRows(scene, config, threads, onRow, band)((w, h) => Bitmap.byRows(w, h)(_))(_.rows)
+    inRows(scene, config, threads, everyRow(onRow), band)((w, h) => Bitmap.byRows(w, h)(_))(
+      _.rows
+    )
+
+  /** Renders `scene` as [[render]] does, into `picture` (as many columns as the camera's
+    * picture, and as many rows as `band` holds of it), and calls `onRows(at, count)` from the
+    * worker threads each time rows `at` until `at + count` of `picture` are stored (each row
+    * once): a PNG's bands can be encoded as the render goes on ([[tracer.image.PngStream]]).
+    */
+  def renderInto(
+      scene: Scene,
+      config: CameraConfig,
+      picture: Bitmap.Builder,
+      threads: Int = defaultThreads,
+      onRows: (Int, Int) => Unit = (_, _) => (),
+      band: Range = Range(0, Int.MaxValue)
+  ): Unit =
+    inRows(scene, config, threads, onRows, band) { (w, h) => fill =>
+      require(
+        picture.width == w && picture.height == h,
+        s"the picture is ${picture.width}×${picture.height}, the render's rows ${w}×$h"
+      )
+      fill(picture)
+    }(_.rows)
 
   /** Renders `scene` as [[render]] does, into linear floating-point pixels for a `.pfm` or `.exr`
     * file: each pixel the mean of its samples as they are, neither brought into range nor encoded
@@ -41,17 +64,24 @@ object Renderer:
       onRow: () => Unit = () => (),
       band: Range = Range(0, Int.MaxValue)
   ): Raster =
-    inRows(scene, config, threads, onRow, band)((w, h) => Raster.byRows(w, h)(_))(_.linearRows)
+    inRows(scene, config, threads, everyRow(onRow), band)((w, h) => Raster.byRows(w, h)(_))(
+      _.linearRows
+    )
+
+  /** `onRow` called once for each of the `count` rows a task reports. */
+  private def everyRow(onRow: () => Unit): (Int, Int) => Unit = (_, count) =>
+    (0 until count).foreach(_ => onRow())
 
   /** The rows of `band` of the picture, a few a task ([[Tiles.rowsPerTask]]) on a fixed pool of
     * `threads` threads, each task's written by `rows` of the frame straight into the image that
-    * `image` builds (a [[Bitmap]] or a [[Raster]], both filled row by row).
+    * `image` builds (a [[Bitmap]] or a [[Raster]], both filled row by row), then reported to
+    * `onRows` (the first of the image's rows the task wrote, and how many).
     */
   private def inRows[A](
       scene: Scene,
       config: CameraConfig,
       threads: Int,
-      onRow: () => Unit,
+      onRows: (Int, Int) => Unit,
       band: Range
   )(image: (Int, Int) => (PixelWriter => Unit) => A)(rows: Frame => RowsWriter): A =
     require(threads >= 1, s"threads must be at least 1, got $threads")
@@ -72,7 +102,7 @@ object Renderer:
             WorkerThreads.lowerForRows()
             val count = Math.min(height, end - y)
             write(y - first, y, count, store)
-            (0 until count).foreach(_ => onRow())
+            onRows(y - first, count)
           })
         }
         Await.result(done, Duration.Inf)
