@@ -43,9 +43,17 @@ object Colour:
   /** A grey of the given brightness in every channel. */
   def grey(level: Double): Colour = Colour(level, level, level)
 
-  /** The sample round(maxval·c) for a channel value c in 0..1, halves rounding up. */
+  /** The sample round(maxval·c) for a channel value c in 0..1, halves rounding up: ⌊maxval·c +
+    * ½⌋ clamped to 0..maxval (NaN gives 0).
+    *
+    * Perf: the conversion to Int truncates toward zero, which is the floor for every value the
+    * clamp keeps, and gives 0 or less (so 0) for every other, NaN included: the same sample
+    * without `Math.floor`, which only C2 compiles to an instruction (the interpreter and C1 call
+    * `StrictMath.floorOrCeil`, 6 ms of a 3840×2160 run's first half second; docs/performance.md,
+    * round 38). `ColourLaws` compares it with the floor's over all doubles.
+    */
   def quantise(c: Double, maxval: Int): Int =
-    Math.min(maxval, Math.max(0, Math.floor(c * maxval + 0.5).toInt))
+    Math.min(maxval, Math.max(0, (c * maxval + 0.5).toInt))
 
   /** [[Colour.inRange]] of the colour (r, g, b), handed to `k` as three doubles: the same
     * operations, for hot loops that keep colours in doubles.

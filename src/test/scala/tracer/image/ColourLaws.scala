@@ -54,6 +54,26 @@ class ColourLaws extends ScalaCheckSuite:
     assertEquals(Colour.quantise(0.2, 255), 51)
     assertEquals(Colour.quantise(1.5 / 255, 255), 2)
 
+  property("a sample is the floor of maxval·c + ½, clamped, for every double c"):
+    val anyDouble = org.scalacheck.Gen.oneOf(
+      org.scalacheck.Arbitrary.arbitrary[Double],
+      org.scalacheck.Gen.choose(-2.0, 2.0),
+      org.scalacheck.Gen.oneOf(
+        Double.NaN,
+        Double.PositiveInfinity,
+        Double.NegativeInfinity,
+        -0.0,
+        0.5 / 255,
+        -0.5 / 255,
+        254.5 / 255,
+        -1.0 / 255,
+        Double.MinPositiveValue
+      )
+    )
+    forAll(anyDouble, maxval) { (c, m) =>
+      assertEquals(Colour.quantise(c, m), Math.min(m, Math.max(0, Math.floor(c * m + 0.5).toInt)))
+    }
+
   test("an over-bright colour is divided by its largest channel, not clipped"):
     val bitmap = Bitmap.fill(1, 1, Colour(2, 1, 0.5))
     assertEquals((0 until 3).map(bitmap.sample(0, 0, _)), Vector(255, 128, 64))
