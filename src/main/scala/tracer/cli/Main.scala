@@ -138,19 +138,12 @@ object Main:
         val raster = Renderer.renderRaster(scene, config, threads, onRow, band)
         Drawn(Images.save(raster, _))
       case ImageFormat.Png =>
-        val picture = Bitmap.Builder(config.columns, band.size)
-        val png     = PngStream(picture)
-        Renderer.renderInto(
-          scene,
-          config,
-          picture,
-          threads,
-          (at, count) =>
-            (0 until count).foreach(_ => onRow())
-            png.rowsDone(at, count)
-          ,
-          band
-        )
+        val picture                             = Bitmap.Builder(config.columns, band.size)
+        val png                                 = PngStream(picture)
+        def rowsDone(at: Int, count: Int): Unit =
+          (0 until count).foreach(_ => onRow())
+          png.rowsDone(at, count)
+        Renderer.renderInto(scene, config, picture, threads, rowsDone, band)
         Drawn(Images.save(png, _, threads), png.encodingNanos)
       case ImageFormat.Ppm =>
         val bitmap = Renderer.render(scene, config, threads, onRow, band)

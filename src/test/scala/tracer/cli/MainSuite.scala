@@ -73,6 +73,15 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
     assert(r.out.matches("Tracetime: \\d+ ms\n"), s"stdout: '${r.out}'")
     assertEquals(r.err, "")
 
+  dir.test("a PNG, encoded while it renders, is the bytes of the PPM's picture as a PNG"): d =>
+    val scene = resource("/samples/basics.xml")
+    for threads <- List("1", "2") do
+      assertEquals(run(d, scene, "-x", "200", "-p", threads, s"s$threads.png").status, 0)
+      assertEquals(run(d, scene, "-x", "200", "-p", threads, s"s$threads.ppm").status, 0)
+      val ppm = Ppm.read(Files.readAllBytes(d.resolve(s"s$threads.ppm")))
+      val png = ppm.map(b => tracer.image.Png.encode(b).toList)
+      assertEquals(Right(Files.readAllBytes(d.resolve(s"s$threads.png")).toList), png, threads)
+
   dir.test("without -t nothing is printed"): d =>
     assertEquals(run(d, simple, "-x", "40", "out.ppm"), Run(0, "", ""))
 

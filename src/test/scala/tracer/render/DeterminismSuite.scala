@@ -90,3 +90,19 @@ class DeterminismSuite extends munit.FunSuite:
         rows.incrementAndGet(); ()
     ): Unit
     assertEquals(rows.get, config.rows)
+
+  test("renderInto stores render's picture, each row reported once, a band's rows from 0"):
+    val expected = Renderer.render(scene, config, 2, band = 10 until 40)
+    for threads <- List(1, 3) do
+      val picture = tracer.image.Bitmap.Builder(config.columns, 30)
+      val times   = java.util.concurrent.atomic.AtomicIntegerArray(30)
+      Renderer.renderInto(
+        scene,
+        config,
+        picture,
+        threads,
+        (at, count) => (at until at + count).foreach(times.incrementAndGet(_): Unit),
+        10 until 40
+      )
+      assertEquals(picture.result, expected, s"$threads threads")
+      assertEquals((0 until 30).map(times.get), Vector.fill(30)(1), s"$threads threads")
