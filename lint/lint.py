@@ -58,6 +58,7 @@ KEYWORD_RULES = {
     "while-without-why",
     "throw-without-why",
     "boxed-nan-test",
+    "strict-pow",
 }
 WHY_RULES = {"var-without-why", "while-without-why", "throw-without-why"}
 WHY = re.compile(r"//\s*(Why|Perf):\s*(\S.*?)\s*$")

@@ -83,6 +83,30 @@ class LintSuite extends munit.FunSuite:
     assert(!out.contains("Nan.scala:6:"), out)
     assert(!out.contains("NanSuite.scala"), out)
 
+  scratch.test("StrictMath.pow fails in main code, not in comments, strings or tests"): d =>
+    write(
+      d,
+      "src/main/scala/x/Power.scala",
+      """package x
+          |
+          |object Power:
+          |  def bad(x: Double): Double = StrictMath.pow(x, 3)
+          |  def good(x: Double): Double = tracer.math.Pow.pow(x, 3) // not StrictMath.pow(x, 3)
+          |  val text = "StrictMath.pow(x, 3) in a string"
+          |""".stripMargin
+    )
+    write(
+      d,
+      "src/test/scala/x/PowerSuite.scala",
+      "package x\n\nobject PowerSuite:\n  def t(x: Double): Double = StrictMath.pow(x, 2)\n"
+    )
+    val (status, out) = lint(d, "src")
+    assertEquals(status, 1, out)
+    assert(out.contains("src/main/scala/x/Power.scala:4:32: strict-pow:"), out)
+    assert(!out.contains("Power.scala:5:"), out)
+    assert(!out.contains("Power.scala:6:"), out)
+    assert(!out.contains("PowerSuite.scala"), out)
+
   scratch.test("var, while and throw stand exactly where a Why: or Perf: comment covers them"): d =>
     write(
       d,

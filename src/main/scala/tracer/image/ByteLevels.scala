@@ -1,5 +1,7 @@
 package tracer.image
 
+import tracer.math.Pow
+
 /** The 8-bit sample of an encoded channel, `Colour.quantise(encoding.encode(c), 255)`, found
   * from a table of where each sample begins instead of a `StrictMath.pow` a channel: the same
   * sample for every c (`ByteLevelsProperties`).
@@ -23,9 +25,9 @@ final class ByteLevels(encoding: Encoding):
   val tabled: Boolean =
     val inverse: Option[Double => Double] = encoding match
       case Encoding.Linear       => None
-      case Encoding.Power(gamma) => Some(v => StrictMath.pow(v, gamma))
+      case Encoding.Power(gamma) => Some(v => Pow.pow(v, gamma))
       case Encoding.Srgb         =>
-        Some(v => if v <= 0.04045 then v / 12.92 else StrictMath.pow((v + 0.055) / 1.055, 2.4))
+        Some(v => if v <= 0.04045 then v / 12.92 else Pow.pow((v + 0.055) / 1.055, 2.4))
     inverse.exists { f =>
       (1 to 255).foreach { k =>
         lower(k) = f((k - 0.5 - ByteLevels.Band) / 255)

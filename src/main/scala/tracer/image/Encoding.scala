@@ -1,5 +1,7 @@
 package tracer.image
 
+import tracer.math.Pow
+
 /** How a pixel's linear colour becomes the values written to the file (the `-g` option;
   * docs/scene-format.md, Output encoding). Applied after the colour is brought into range.
   */
@@ -13,12 +15,14 @@ enum Encoding:
   /** The sRGB transfer function (`-g srgb`, POV-Ray's `File_Gamma=sRGB`). */
   case Srgb
 
-  /** One channel value in 0..1, encoded; with `StrictMath.pow`, the same bits on every machine. */
+  /** One channel value in 0..1, encoded; with `StrictMath.pow`'s bits ([[tracer.math.Pow]]), the
+    * same on every machine.
+    */
   def encode(c: Double): Double = this match
     case Linear       => c
-    case Power(gamma) => StrictMath.pow(c, 1 / gamma)
+    case Power(gamma) => Pow.pow(c, 1 / gamma)
     case Srgb         =>
-      if c <= 0.0031308 then 12.92 * c else 1.055 * StrictMath.pow(c, 1 / 2.4) - 0.055
+      if c <= 0.0031308 then 12.92 * c else 1.055 * Pow.pow(c, 1 / 2.4) - 0.055
 
   /** A colour brought into range (hue kept), then encoded channel by channel. */
   def encode(colour: Colour): Colour = this match

@@ -18,11 +18,22 @@ object Refraction:
   /** Crossing the surface of object `i` from inside `insides` (innermost first), with `ior` each
     * object's index of refraction: the ratio η = n₁/n₂ and the objects the ray is inside beyond.
     */
-  def cross(insides: List[Int], i: Int, ior: Int => Double): (Double, List[Int]) = insides match
-    case Nil                      => (1 / ior(i), List(i))
-    case `i` :: outer             => (ior(i) / outer.headOption.fold(1.0)(ior), outer)
-    case _ if insides.contains(i) => (1.0, insides.filterNot(_ == i)) // leaving an overlap
-    case innermost :: _           => (ior(innermost) / ior(i), i :: insides)
+  def cross(insides: List[Int], i: Int, ior: Int => Double): (Double, List[Int]) =
+    crossing(insides, i, ior)((_, _))
+
+  /** [[cross]]'s ratio and objects beyond handed to `k`, the same values.
+    *
+    * Perf: `inline` with inline arguments, so the shading's crossing of a clear surface makes no
+    * tuple, boxed ratio or closure for `ior` (only the list of objects beyond, when it changes);
+    * docs/performance.md, round 38.
+    */
+  inline def crossing[A](insides: List[Int], i: Int, inline ior: Int => Double)(
+      inline k: (Double, List[Int]) => A
+  ): A = insides match
+    case Nil          => k(1 / ior(i), List(i))
+    case `i` :: outer => k(ior(i) / (if outer.isEmpty then 1.0 else ior(outer.head)), outer)
+    case _ if insides.contains(i) => k(1.0, insides.filterNot(_ == i)) // leaving an overlap
+    case innermost :: _           => k(ior(innermost) / ior(i), i :: insides)
 
   /** The direction of a ray going `direction` (unit) after crossing a surface whose unit normal is
     * `normal` with ratio `eta` (Heckbert's formula), or `None` for total internal reflection.

@@ -2,7 +2,7 @@ package tracer.render
 
 import tracer.geometry.{Ray, Shape}
 import tracer.image.Colour
-import tracer.math.Vec3
+import tracer.math.{Pow, Vec3}
 import tracer.scene.{Pigment, Surface}
 
 /** The colour a ray brings back from the world (docs/rendering.md, Colour of a hit): the course's
@@ -302,28 +302,29 @@ final class Shading(world: World, mode: ShadingMode):
       s0y: Double,
       s0z: Double
   )(dx: Double, dy: Double, dz: Double, depth: Int, insides: List[Int]): Unit =
-    val (eta, beyondInsides) = Refraction.cross(insides, i, world.surface(_).ior)
-    // The ray through starts just behind the surface.
-    val bx = px - nx * Shading.Epsilon
-    val by = py - ny * Shading.Epsilon
-    val bz = pz - nz * Shading.Epsilon
-    def through(ux: Double, uy: Double, uz: Double, depthBeyond: Int): Unit =
-      traceFrom(bx, by, bz, ux, uy, uz, depthBeyond, beyondInsides)
-      val tr = red * surface.transmit
-      val tg = green * surface.transmit
-      val tb = blue * surface.transmit
-      mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
-      red = tr + red
-      green = tg + green
-      blue = tb + blue
-    if Math.abs(eta - 1) < Refraction.SameIndex then through(dx, dy, dz, depth)
-    else
-      Refraction.refracted(dx, dy, dz, sx, sy, sz, eta)((ux, uy, uz) =>
-        through(ux, uy, uz, depth - 1)
-      ) {
-        val k = 2 * (sx * dx + sy * dy + sz * dz)
-        traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
-      }
+    Refraction.crossing(insides, i, world.surface(_).ior) { (eta, beyondInsides) =>
+      // The ray through starts just behind the surface.
+      val bx = px - nx * Shading.Epsilon
+      val by = py - ny * Shading.Epsilon
+      val bz = pz - nz * Shading.Epsilon
+      def through(ux: Double, uy: Double, uz: Double, depthBeyond: Int): Unit =
+        traceFrom(bx, by, bz, ux, uy, uz, depthBeyond, beyondInsides)
+        val tr = red * surface.transmit
+        val tg = green * surface.transmit
+        val tb = blue * surface.transmit
+        mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
+        red = tr + red
+        green = tg + green
+        blue = tb + blue
+      if Math.abs(eta - 1) < Refraction.SameIndex then through(dx, dy, dz, depth)
+      else
+        Refraction.refracted(dx, dy, dz, sx, sy, sz, eta)((ux, uy, uz) =>
+          through(ux, uy, uz, depth - 1)
+        ) {
+          val k = 2 * (sx * dx + sy * dy + sz * dz)
+          traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+        }
+    }
 
   /** The surface colour C of leaf `leaf` of shape `i` at the point p: the texel or checker cell
     * there, or the plain colour.
@@ -404,7 +405,7 @@ object Shading:
         val k   = 2 * (nx * dx + ny * dy + nz * dz)
         val cos = (dx - nx * k) * lx + (dy - ny * k) * ly + (dz - nz * k) * lz
         if cos > 0 && (surface.phongSize < 60 || cos > 0.0008) then
-          surface.phong * StrictMath.pow(cos, surface.phongSize)
+          surface.phong * Pow.pow(cos, surface.phongSize)
         else 0.0
     val specular =
       if surface.specular <= 0 then 0.0
@@ -415,5 +416,5 @@ object Shading:
         val hz     = (lz - dz) * 0.5
         val length = Math.sqrt(hx * hx + hy * hy + hz * hz)
         val cos    = if length > 0 then (hx * nx + hy * ny + hz * nz) / length else 0.0
-        if cos > 0 then surface.specular * StrictMath.pow(cos, 1 / surface.roughness) else 0.0
+        if cos > 0 then surface.specular * Pow.pow(cos, 1 / surface.roughness) else 0.0
     phong + specular

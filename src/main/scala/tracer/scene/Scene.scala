@@ -2,7 +2,7 @@ package tracer.scene
 
 import tracer.geometry.Shape
 import tracer.image.{Bitmap, Colour, Raster, Texels}
-import tracer.math.{Placement, Vec3}
+import tracer.math.{Placement, Pow, Vec3}
 
 /** A scene as the XML describes it: a camera, a background, lights and objects, all immutable.
   *
@@ -82,8 +82,10 @@ final case class Fade(distance: Double, power: Double):
   require(distance > 0 && distance.isFinite, s"fade-distance must be positive, got $distance")
   require(power > 0 && power.isFinite, s"fade-power must be positive, got $power")
 
-  /** A(d) = 2 / (1 + (d / D)ⁿ); `StrictMath` so that every machine computes the same bits. */
-  def attenuation(d: Double): Double = 2 / (1 + StrictMath.pow(d / distance, power))
+  /** A(d) = 2 / (1 + (d / D)ⁿ), with `StrictMath.pow`'s bits ([[tracer.math.Pow]]), so that every
+    * machine computes the same.
+    */
+  def attenuation(d: Double): Double = 2 / (1 + Pow.pow(d / distance, power))
 
 /** The regular grid of sub-lights of an area light (scene-format-v2, Area lights), as POV-Ray's
   * `area_light a, b, samplesA, samplesB` without jitter: sub-light (i, j) sits at

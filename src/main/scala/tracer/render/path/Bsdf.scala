@@ -317,23 +317,24 @@ final case class Bsdf(
     val tx   = b
     val ty   = sign + ny * ny * a
     val tz   = -ny
-    val m    = Microfacet.sampleNormal(
+    Microfacet.sampledNormal(
       alpha,
       ix * sx + iy * sy + iz * sz,
       ix * tx + iy * ty + iz * tz,
       ix * nx + iy * ny + iz * nz,
       u1,
       u2
-    )
-    Bsdf.reflectInto(
-      out,
-      -ix,
-      -iy,
-      -iz,
-      sx * m.x + tx * m.y + nx * m.z,
-      sy * m.x + ty * m.y + ny * m.z,
-      sz * m.x + tz * m.y + nz * m.z
-    )
+    ) { (mx, my, mz) =>
+      Bsdf.reflectInto(
+        out,
+        -ix,
+        -iy,
+        -iz,
+        sx * mx + tx * my + nx * mz,
+        sy * mx + ty * my + ny * mz,
+        sz * mx + tz * my + nz * mz
+      )
+    }
 
   /** Mitsuba's smooth `dielectric`: reflection with the exact unpolarised Fresnel reflectance F
     * (1 past the critical angle), refraction otherwise, index η inside and 1 outside. A refracted

@@ -66,7 +66,22 @@ object Microfacet:
       iz: Double,
       u1: Double,
       u2: Double
-  ): Vec3 =
+  ): Vec3 = sampledNormal(alpha, ix, iy, iz, u1, u2)(Vec3(_, _, _))
+
+  /** [[sampleNormal]]'s normal handed to `k` as three doubles, the same bits.
+    *
+    * Perf: `inline` with an inline body, so a glossy path sample makes no `Vec3` and no tuple
+    * (a pair of doubles is two boxed doubles and a `Tuple2`), before C2's escape analysis as
+    * after it (`Bsdf.glossySample`; docs/performance.md, round 38).
+    */
+  inline def sampledNormal[A](
+      alpha: Double,
+      ix: Double,
+      iy: Double,
+      iz: Double,
+      u1: Double,
+      u2: Double
+  )(inline k: (Double, Double, Double) => A): A =
     // The view direction in the hemisphere configuration (α stretched to 1).
     val vx0 = alpha * ix
     val vy0 = alpha * iy
@@ -75,12 +90,12 @@ object Microfacet:
     val vy  = vy0 / vl
     val vz  = iz / vl
     // An orthonormal basis (T1, T2, V).
-    val lensq      = vx * vx + vy * vy
-    val (t1x, t1y) =
-      if lensq > 0 then (-vy / Math.sqrt(lensq), vx / Math.sqrt(lensq)) else (1.0, 0.0)
-    val t2x = -vz * t1y
-    val t2y = vz * t1x
-    val t2z = vx * t1y - vy * t1x
+    val lensq = vx * vx + vy * vy
+    val t1x   = if lensq > 0 then -vy / Math.sqrt(lensq) else 1.0
+    val t1y   = if lensq > 0 then vx / Math.sqrt(lensq) else 0.0
+    val t2x   = -vz * t1y
+    val t2y   = vz * t1x
+    val t2z   = vx * t1y - vy * t1x
     // A point on the projected disc, its lower half squeezed towards the view.
     val r  = Math.sqrt(u1)
     val p1 = r * Turn.cos(u2) // φ = 2π·u2
@@ -95,7 +110,7 @@ object Microfacet:
     val my = alpha * ny
     val mz = Math.max(0.0, nz)
     val ml = Math.sqrt(mx * mx + my * my + mz * mz)
-    if ml > 0 then Vec3(mx / ml, my / ml, mz / ml) else Vec3.UnitZ
+    if ml > 0 then k(mx / ml, my / ml, mz / ml) else k(0.0, 0.0, 1.0)
 
   /** α for POV-Ray's Phong highlight of size s: √(2 / (4s + 2)) (a Phong exponent s on R·V is
     * about a Blinn exponent 4s, and a Blinn exponent e is about GGX's α = √(2 / (e + 2))).
