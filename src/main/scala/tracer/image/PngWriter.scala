@@ -126,45 +126,84 @@ private[image] object PngWriter:
     val from     = b * BandRows
     val until    = bandEnd(picture, b)
     val last     = until == picture.height
-    val filtered = filterBand(picture, from, until)
-    val deflater = Deflater(Level, true)
+    val work     = workspaces.get()
+    val length   = filterBand(picture, from, until, work, tail = false)
+    val deflater = work.deflater
+    deflater.reset()
     if from > 0 then
       // A row's filtered bytes depend only on it and the row above, so these are the stream's own.
-      val tail  = filterBand(picture, from - dictionaryRows(picture, b), from)
-      val start = Math.max(0, tail.length - Window)
-      deflater.setDictionary(tail, start, tail.length - start)
-    deflater.setInput(filtered)
+      val size  = filterBand(picture, from - dictionaryRows(picture, b), from, work, tail = true)
+      val start = Math.max(0, size - Window)
+      deflater.setDictionary(work.tail, start, size - start)
+    deflater.setInput(work.band, 0, length)
     if last then deflater.finish()
-    val deflated = ByteArrayOutputStream(filtered.length / 4 + 64)
-    val buffer   = new Array[Byte](1 << 16)
+    val deflated = work.output
+    deflated.reset()
     // Why: the JDK's Deflater is driven in a loop until it has given every byte of the piece.
     var more = true
     while more do
       val flush = if last then Deflater.NO_FLUSH else Deflater.SYNC_FLUSH
-      val n     = deflater.deflate(buffer, 0, buffer.length, flush)
-      deflated.write(buffer, 0, n)
-      more = if last then !deflater.finished() else n == buffer.length
-    deflater.end()
+      val n     = deflater.deflate(work.buffer, 0, work.buffer.length, flush)
+      deflated.write(work.buffer, 0, n)
+      more = if last then !deflater.finished() else n == work.buffer.length
     val adler = Adler32()
-    adler.update(filtered)
-    Band(adler.getValue, filtered.length, deflated.toByteArray)
+    adler.update(work.band, 0, length)
+    Band(adler.getValue, length, deflated.toByteArray)
+
+  /** A thread's buffers for encoding bands, kept from one band to the next: the band's filtered
+    * rows, its dictionary's, two rows of 8-bit samples, the deflater and its output.
+    *
+    * Perf: made afresh for every band, they were about 40 MB of garbage a 3840×2160 picture
+    * (the filtered rows, the dictionary's rows filtered again, the deflater's buffers), enough
+    * to bring a young collection into the render, which copied its 51 MB bitmap (30 ms with both
+    * threads stopped; docs/performance.md, round 38); a deflater reset keeps zlib's state instead
+    * of allocating and clearing it again. The pool's threads end with the render, and their
+    * workspaces with them.
+    */
+  private final class Workspace:
+    val deflater = Deflater(Level, true)
+    val output   = ByteArrayOutputStream(1 << 16)
+    val buffer   = new Array[Byte](1 << 16)
+    // Why: each grown to the largest this thread has needed, then reused.
+    var band     = Array.emptyByteArray
+    var tail     = Array.emptyByteArray
+    var previous = Array.emptyByteArray
+    var current  = Array.emptyByteArray
+
+  /** Each thread's [[Workspace]]. */
+  private val workspaces = ThreadLocal.withInitial(() => Workspace())
 
   /** The stream's closing Adler-32 of the filtered bytes, most significant byte first. */
   private def checksum(adler: Long): Array[Byte] =
     Array((adler >>> 24).toByte, (adler >>> 16).toByte, (adler >>> 8).toByte, adler.toByte)
 
   /** Rows `from` until `until` of `picture` as 8-bit samples, each row its filter type's byte and
-    * the row filtered with [[bestFilter]]'s choice.
+    * the row filtered with [[bestFilter]]'s choice, into the workspace's `tail` or `band` (grown
+    * when too short); returns how many bytes they take.
     */
-  private def filterBand(picture: Picture, from: Int, until: Int): Array[Byte] =
+  private def filterBand(
+      picture: Picture,
+      from: Int,
+      until: Int,
+      work: Workspace,
+      tail: Boolean
+  ): Int =
     val stride  = 3 * picture.width
     val samples = picture.samples
     val maxval  = picture.maxval
-    val band    = new Array[Byte]((until - from) * (stride + 1))
+    val length  = (until - from) * (stride + 1)
+    if tail && work.tail.length < length then work.tail = new Array[Byte](length)
+    if !tail && work.band.length < length then work.band = new Array[Byte](length)
+    if work.current.length != stride then
+      work.previous = new Array[Byte](stride)
+      work.current = new Array[Byte](stride)
+    val band = if tail then work.tail else work.band
     // Perf: two row buffers, swapped after each row rather than allocated per row.
-    var previous = new Array[Byte](stride)
-    var current  = new Array[Byte](stride)
+    var previous = work.previous
+    var current  = work.current
+    // The row above the first: none (zeros, for the Up filter) above row 0.
     if from > 0 then to8Bits(samples, (from - 1) * stride, maxval, previous)
+    else java.util.Arrays.fill(previous, 0.toByte)
     // Perf: a plain loop over the band's rows (a for over a range boxed its indices, round 3).
     var y = from
     while y < until do
@@ -175,7 +214,7 @@ private[image] object PngWriter:
       applyFilter(filter, current, previous, band, at + 1)
       val swap = previous; previous = current; current = swap
       y += 1
-    band
+    length
 
   /** Bytes of a row that each call of the filtering's inner loops takes ([[to8Bits]],
     * [[bestFilter]], [[applyFilter]]).
