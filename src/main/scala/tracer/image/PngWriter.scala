@@ -153,12 +153,13 @@ private[image] object PngWriter:
   /** A thread's buffers for encoding bands, kept from one band to the next: the band's filtered
     * rows, its dictionary's, two rows of 8-bit samples, the deflater and its output.
     *
-    * Perf: made afresh for every band, they were about 40 MB of garbage a 3840×2160 picture
-    * (the filtered rows, the dictionary's rows filtered again, the deflater's buffers), enough
-    * to bring a young collection into the render, which copied its 51 MB bitmap (30 ms with both
-    * threads stopped; docs/performance.md, round 38); a deflater reset keeps zlib's state instead
-    * of allocating and clearing it again. The pool's threads end with the render, and their
-    * workspaces with them.
+    * Perf: made afresh for every band, they were about 40 MB of garbage a 3840×2160 picture (by
+    * their sizes: the filtered rows, the dictionary's rows filtered again, the deflater's
+    * buffers), enough to bring a young collection into the render, which copied its 51 MB bitmap
+    * (30 ms with both threads stopped, `-Xlog:gc`; docs/performance.md, round 38); a deflater
+    * reset keeps zlib's state instead of allocating and clearing it again. A render pool's threads
+    * end with the render, and their workspaces with them; the calling thread keeps its own for
+    * the next picture (a batch's).
     */
   private final class Workspace:
     val deflater = Deflater(Level, true)
@@ -228,14 +229,22 @@ private[image] object PngWriter:
     */
   private val Piece = 512
 
+  /** Runs `body` on bytes `from` until `length` of a row, a [[Piece]] at a time (each call given
+    * the piece's first byte and the byte after its last).
+    *
+    * Perf: inline, so each caller's loop is written out in it, with no closure.
+    */
+  private inline def inPieces(from: Int, length: Int)(inline body: (Int, Int) => Unit): Unit =
+    // Why: the first byte of the next piece.
+    var at = from
+    while at < length do
+      val until = Math.min(length, at + Piece)
+      body(at, until)
+      at = until
+
   /** Copies the `row.length` samples from `start` into `row` as 8-bit values. */
   private def to8Bits(samples: Array[Char], start: Int, maxval: Int, row: Array[Byte]): Unit =
-    // Why: the first byte of the next piece.
-    var from = 0
-    while from < row.length do
-      val until = Math.min(row.length, from + Piece)
-      to8BitsPiece(samples, start, maxval, row, from, until)
-      from = until
+    inPieces(0, row.length)((from, until) => to8BitsPiece(samples, start, maxval, row, from, until))
 
   /** [[to8Bits]] of bytes `from` until `until` of the row. */
   private def to8BitsPiece(
@@ -268,13 +277,9 @@ private[image] object PngWriter:
     * Paeth's predictor; 3840×2160 runs 3–5% sooner (docs/performance.md, round 35).
     */
   private[image] def bestFilter(row: Array[Byte], above: Array[Byte]): Int =
-    // Why: Sub's sum of magnitudes minus Up's so far, and the first byte of the next piece.
+    // Why: Sub's sum of magnitudes minus Up's so far.
     var balance = 0L
-    var from    = 0
-    while from < row.length do
-      val until = Math.min(row.length, from + Piece)
-      balance += weigh(row, above, from, until)
-      from = until
+    inPieces(0, row.length)((from, until) => balance += weigh(row, above, from, until))
     if balance <= 0 then 1 else 2
 
   /** Sub's sum of magnitudes minus Up's over bytes `from` until `until` of `row`. */
@@ -317,13 +322,10 @@ private[image] object PngWriter:
     // their index.
     val first = Math.min(row.length, 3)
     if filter == 1 then System.arraycopy(row, 0, out, at, first)
-    // Why: the first byte of the next piece.
-    var from = if filter == 1 then first else 0
-    while from < row.length do
-      val until = Math.min(row.length, from + Piece)
+    inPieces(if filter == 1 then first else 0, row.length) { (from, until) =>
       if filter == 1 then subPiece(row, out, at, from, until)
       else upPiece(row, above, out, at, from, until)
-      from = until
+    }
 
   /** Bytes `from` until `until` (from 3 on) of `row` filtered with Sub into `out` from `at`. */
   private def subPiece(row: Array[Byte], out: Array[Byte], at: Int, from: Int, until: Int): Unit =

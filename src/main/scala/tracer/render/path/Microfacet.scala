@@ -1,7 +1,5 @@
 package tracer.render.path
 
-import tracer.math.Vec3
-
 /** The GGX (Trowbridge–Reitz) microfacet distribution of a rough mirror, as Mitsuba 3's
   * `roughconductor` uses it with `distribution="ggx"` (Mitsuba's `microfacet.h`): isotropic
   * roughness α, the separable Smith masking-shadowing G₁(ωi)·G₁(ωo), sampled by its visible
@@ -47,7 +45,7 @@ object Microfacet:
     if iz <= 0 || oz <= 0 then 0.0
     else distribution(alpha, hz) * smithG1(alpha, iz, ih) * smithG1(alpha, oz, ih) / (4 * iz)
 
-  /** The density per unit solid angle with which [[sampleNormal]] followed by a mirror
+  /** The density per unit solid angle with which [[sampledNormal]] followed by a mirror
     * reflection of ωi produces ωo: D(h)·G₁(ωi, h) / (4 cos θi) (visible normals); arguments as
     * [[reflected]]'s.
     */
@@ -57,18 +55,8 @@ object Microfacet:
 
   /** A microfacet normal drawn from the normals visible from unit local ωi (iz > 0), with the
     * density G₁(ωi, m)·max(0, ωi · m)·D(m) / cos θi, from the uniform numbers u1, u2 (Heitz,
-    * "Sampling the GGX Distribution of Visible Normals", 2018), in the local frame.
-    */
-  def sampleNormal(
-      alpha: Double,
-      ix: Double,
-      iy: Double,
-      iz: Double,
-      u1: Double,
-      u2: Double
-  ): Vec3 = sampledNormal(alpha, ix, iy, iz, u1, u2)(Vec3(_, _, _))
-
-  /** [[sampleNormal]]'s normal handed to `k` as three doubles, the same bits.
+    * "Sampling the GGX Distribution of Visible Normals", 2018), in the local frame, handed to `k`
+    * as three doubles.
     *
     * Perf: `inline` with an inline body, so a glossy path sample makes no `Vec3` and no tuple
     * (a pair of doubles is two boxed doubles and a `Tuple2`), before C2's escape analysis as
