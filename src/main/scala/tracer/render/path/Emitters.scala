@@ -145,7 +145,7 @@ final class Emitters(scene: Scene, world: World):
     */
   def sample(p: Vec3, choice: Double, u1: Double, u2: Double): LightSample =
     val out = Scratch()
-    sampleInto(out, p.x, p.y, p.z, choice, u1, u2)
+    sampleInto(out, p.x, p.y, p.z, choice, u1, u2, p.x, p.y, p.z)
     LightSample(
       Vec3(out.lx, out.ly, out.lz),
       out.distance,
@@ -154,7 +154,9 @@ final class Emitters(scene: Scene, world: World):
     )
 
   /** [[sample]] for the point (px, py, pz), into `out`'s light fields: what path mode's loop
-    * calls, allocating nothing for points, faces and the sky (PathBench).
+    * calls, allocating nothing for points, faces and the sky (PathBench). The point lit is
+    * (qx, qy, qz): a fading light's A(d) takes d from it (scene-format.md, Fading lights), while
+    * the direction and distance are (px, py, pz)'s, the shadow ray's start S0 just off it.
     */
   def sampleInto(
       out: Scratch,
@@ -163,7 +165,10 @@ final class Emitters(scene: Scene, world: World):
       pz: Double,
       choice: Double,
       u1: Double,
-      u2: Double
+      u2: Double,
+      qx: Double,
+      qy: Double,
+      qz: Double
   ): Unit =
     val scaled = choice * count
     val k      = Math.min(count - 1, scaled.toInt)
@@ -180,7 +185,7 @@ final class Emitters(scene: Scene, world: World):
         if d <= 0 then out.dark()
         else
           // Sub-light C/m, chosen with chance 1/m among the grid (MitsubaSuite, lambert).
-          val scale = Math.PI * light.attenuation(d) * count
+          val scale = Math.PI * Emitters.faded(light, at, qx, qy, qz) * count
           val c     = light.colour
           out.light(tx / d, ty / d, tz / d, d, c.r * scale, c.g * scale, c.b * scale, 0)
       case Emitter.Ball(_, sphere, emission) =>
@@ -223,8 +228,20 @@ final class Emitters(scene: Scene, world: World):
           pdf
         )
 
-/** Sampling spheres by solid angle. */
+/** Sampling spheres by solid angle, and a light's fade. */
 object Emitters:
+  /** A(d) of `light` for the point (qx, qy, qz) it lights from `at` (a point light's location or
+    * one of an area light's sub-lights): d = |at − q|, measured from the point itself, not from
+    * the shadow ray's start just off it; 1 without fade.
+    */
+  def faded(light: Light, at: Vec3, qx: Double, qy: Double, qz: Double): Double =
+    if light.fade.isEmpty then 1.0
+    else
+      val x = at.x - qx
+      val y = at.y - qy
+      val z = at.z - qz
+      light.attenuation(Math.sqrt(x * x + y * y + z * z))
+
   /** The density per unit solid angle of a direction drawn uniformly from the cone of directions
     * in which `sphere` is seen from `from`: 1 / (2π(1 − cos θmax)); 0 from inside.
     */

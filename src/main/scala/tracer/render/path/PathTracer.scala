@@ -333,7 +333,18 @@ object PathTracer:
       val fx = px + nx * Shading.Epsilon
       val fy = py + ny * Shading.Epsilon
       val fz = pz + nz * Shading.Epsilon
-      emitters.sampleInto(out, fx, fy, fz, choice, Sampler.first(point), Sampler.second(point))
+      emitters.sampleInto(
+        out,
+        fx,
+        fy,
+        fz,
+        choice,
+        Sampler.first(point),
+        Sampler.second(point),
+        px,
+        py,
+        pz
+      )
       if !out.isDark then
         bsdf.evaluateInto(out, sx, sy, sz, ix, iy, iz, out.lx, out.ly, out.lz)
         if Math.max(out.fr, Math.max(out.fg, out.fb)) > 0 then
