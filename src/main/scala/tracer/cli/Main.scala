@@ -53,6 +53,7 @@ object Main:
       Options.parse(args) match
         case Command.Help(usage) =>
           out.println(usage)
+          out.println(s"\n${Options.javaLine}")
           Success
         case Command.Version(line) =>
           out.println(line)

@@ -104,7 +104,7 @@ object Options:
           )
         case (Some(_), Nil) if conflict.isDefined    => Command.UsageError(conflict.mkString)
         case (Some(options), Nil) if options.version =>
-          Command.Version(s"tracer ${BuildInfo.version}\n$javaLine")
+          Command.Version(s"tracer ${BuildInfo.version}")
         case (Some(options @ Options(batch = Some(list))), Nil) =>
           if options.output.nonEmpty then
             Command.UsageError(
@@ -164,7 +164,9 @@ object Options:
       "--stack"   -> options.stack.nonEmpty
     ).collect { case (name, true) => name }
 
-  /** The Java this process runs on, as `--version`'s second line names it. */
+  /** The Java this process runs on, as the last line of `--help` names it (`--version` prints
+    * `tracer VERSION` alone, as the command's specification says).
+    */
   private[cli] def javaLine: String =
     def property(name: String) = sys.props.getOrElse(name, "unknown")
     s"Java ${property("java.version")} (${property("java.vendor")}) at ${property("java.home")}"

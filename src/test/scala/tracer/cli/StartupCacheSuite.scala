@@ -34,8 +34,8 @@ class StartupCacheSuite extends munit.FunSuite:
       try Processes.run(Seq(tracer, "-x", "8", "-i", "showcase.xml", picture.toString), scenes)
       finally Files.deleteIfExists(picture): Unit
     assertEquals(first.status, 0, first.err)
-    val version = Processes.run(Seq(tracer, "--version"), scenes)
-    version.out.linesIterator.collectFirst {
+    val help = Processes.run(Seq(tracer, "--help"), scenes)
+    help.out.linesIterator.collectFirst {
       case line if line.startsWith("Java ") => line.drop(5).takeWhile(_.isDigit).toIntOption
     }.flatten
 
