@@ -86,7 +86,7 @@ object Plane:
   * @param textureCorners the texture coordinates of the three corners, for mesh triangles whose
   *   OBJ file gives them; without them a texture maps T0, T1, T2 to (0, 0), (1, 0), (0, 1)
   * @param cornerNormals  the unit normals at the three corners of a smooth mesh's face, which
-  *   shading interpolates (scene-format-v2, Smooth meshes); without them the face is flat
+  *   shading interpolates (docs/scene-format.md, Version 2, Smooth meshes); without them the face is flat
   */
 final case class Triangle(
     t0: Vec3,

@@ -56,7 +56,9 @@ private[io] object LightsReader:
         case (None, Some(_))    => e.fail("attribute fade-power needs fade-distance beside it")
     yield fade
 
-  /** An `<area samples-a samples-b>` with its axes `<a>` and `<b>` (scene-format-v2). */
+  /** An `<area samples-a samples-b>` with its axes `<a>` and `<b>` (docs/scene-format.md,
+    * Version 2, Area lights).
+    */
   private def areaLight(e: Element): Result[AreaLight] =
     for
       children <- contents(e, Vocabulary.AreaAttributes, Vocabulary.AreaChildren)

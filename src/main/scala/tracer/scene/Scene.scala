@@ -87,7 +87,7 @@ final case class Fade(distance: Double, power: Double):
     */
   def attenuation(d: Double): Double = 2 / (1 + Pow.pow(d / distance, power))
 
-/** The regular grid of sub-lights of an area light (scene-format-v2, Area lights), as POV-Ray's
+/** The regular grid of sub-lights of an area light (docs/scene-format.md, Version 2, Area lights), as POV-Ray's
   * `area_light a, b, samplesA, samplesB` without jitter: sub-light (i, j) sits at
   * location + a·(i/(samplesA − 1) − ½) + b·(j/(samplesB − 1) − ½), an axis with one sample adding
   * nothing. Lighting directions still point at the centre; only shadows come from the grid.
