@@ -58,6 +58,8 @@ class ColourLaws extends ScalaCheckSuite:
     val anyDouble = org.scalacheck.Gen.oneOf(
       org.scalacheck.Arbitrary.arbitrary[Double],
       org.scalacheck.Gen.choose(-2.0, 2.0),
+      // Just below 0 at maxval 255, where flooring c · maxval + ½ and truncating it differ.
+      org.scalacheck.Gen.choose(-1.5, 0.0).map(_ / 255),
       org.scalacheck.Gen.oneOf(
         Double.NaN,
         Double.PositiveInfinity,
@@ -73,6 +75,9 @@ class ColourLaws extends ScalaCheckSuite:
     forAll(anyDouble, maxval) { (c, m) =>
       assertEquals(Colour.quantise(c, m), Math.min(m, Math.max(0, Math.floor(c * m + 0.5).toInt)))
     }
+
+  property("a sample of −0.9 / maxval is 0, not −1 or 1: maxval · c + ½ is −0.4"):
+    forAll(maxval)(m => assertEquals(Colour.quantise(-0.9 / m, m), 0))
 
   test("an over-bright colour is divided by its largest channel, not clipped"):
     val bitmap = Bitmap.fill(1, 1, Colour(2, 1, 0.5))

@@ -102,3 +102,25 @@ class PngWriterProperties extends ScalaCheckSuite:
       val best = if sums(0) <= sums(1) then 1 else 2
       Prop(PngWriter.bestFilter(row, above) == best) :| s"sums $sums"
     }
+
+  test("a tie between Sub and Up is Sub: all-zero rows, and one pixel with sums of 30 each"):
+    for n <- List(3, 30, 1536) do
+      assertEquals(PngWriter.bestFilter(new Array[Byte](n), new Array[Byte](n)), 1, s"$n zeros")
+    val row = Array[Byte](10, 10, 10)
+    assertEquals(PngWriter.bestFilter(row, Array[Byte](0, 0, 0)), 1, "Sub 30, Up 30")
+    assertEquals(PngWriter.bestFilter(row, Array[Byte](1, 0, 0)), 2, "Sub 30, Up 29")
+    assertEquals(PngWriter.bestFilter(row, Array[Byte](-1, 0, 0)), 1, "Sub 30, Up 31")
+
+  property("a tie between Sub and Up is Sub: a row below itself moved one pixel right"):
+    // Under (0, 0, 0) and then the row itself moved right by a pixel, Up subtracts from each byte
+    // what Sub does (0 from the first pixel's, the byte three before from each other), so the two
+    // sums are equal, over one piece or several.
+    val rows = for
+      n   <- Gen.oneOf(Gen.choose(1, 60), Gen.choose(160, 400)).map(3 * _)
+      row <- Gen.listOfN(n, Gen.choose(Byte.MinValue, Byte.MaxValue))
+    yield row.toArray
+    forAll(rows) { row =>
+      val above = Array[Byte](0, 0, 0) ++ row.dropRight(3)
+      val same = row.indices.forall(i => specified(1, row, above, i) == specified(2, row, above, i))
+      Prop(same) :| "not a tie" && Prop(PngWriter.bestFilter(row, above) == 1) :| "Up chosen"
+    }
