@@ -1,8 +1,8 @@
 package tracer.cli
 
 import java.io.{IOException, InputStream, PrintStream}
-import java.nio.file.{Files, NoSuchFileException, Path}
-import tracer.io.{SceneSources, SceneXml}
+import java.nio.file.{Files, Path}
+import tracer.io.{IoFailure, SceneSources, SceneXml}
 import tracer.scene.Scene
 
 /** Where the command's inputs come from: the scene from `-i FILE` or standard input, and files
@@ -35,10 +35,9 @@ private[cli] object Inputs:
   def read(file: Path, what: String): Either[String, Array[Byte]] =
     try
       if Files.isDirectory(file) then Left(s"cannot read $what: it is a directory")
+      else if !Files.exists(file) then Left(s"cannot read $what: no such file")
       else Right(Files.readAllBytes(file))
-    catch
-      case _: NoSuchFileException => Left(s"cannot read $what: no such file")
-      case e: IOException         => Left(s"cannot read $what: ${e.getMessage}")
+    catch case e: IOException => Left(s"cannot read $what: ${IoFailure.reason(e)}")
 
   /** The scene's bytes and the directory its relative paths resolve against: FILE's own
     * directory with `-i FILE`, else standard input and the working directory.
@@ -49,7 +48,12 @@ private[cli] object Inputs:
       cwd: Path
   ): Either[String, (Array[Byte], Path)] =
     input match
-      case None       => Right((in.readAllBytes(), cwd))
+      case None =>
+        try Right((in.readAllBytes(), cwd))
+        catch
+          case e: IOException =>
+            Left(s"cannot read the scene from standard input: ${IoFailure.reason(e)}")
+      case Some("")   => Left("cannot read scene file '': -i needs a file name")
       case Some(name) =>
         val file = cwd.resolve(name)
         read(file, s"scene file $name").map((_, file.toAbsolutePath.getParent))

@@ -85,6 +85,8 @@ object Main:
     catch
       case _: OutOfMemoryError =>
         fail(Failure, "out of memory: try a smaller image or more heap (-Xmx)")
+      case _: StackOverflowError =>
+        fail(Failure, "the scene nests its elements too deeply to read (the stack overflowed)")
       case NonFatal(e) => fail(Failure, s"internal error: $e")
 
   /** Why a run failed: the exit status and the message. */

@@ -90,8 +90,8 @@ object Options:
   /** Parses `args` into the command they ask for. Never prints and never exits. */
   def parse(args: Seq[String]): Command =
     val (result, effects) = OParser.runParser(parser, args, Options())
-    val errors            = effects.collect { case OEffect.ReportError(message) => message }
-    val conflict          = result.flatMap(pathConflict)
+    val errors   = effects.collect { case OEffect.ReportError(message) => clearer(message, args) }
+    val conflict = result.flatMap(pathConflict)
     if effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false } then
       Command.Help(usage)
     else
@@ -127,8 +127,8 @@ object Options:
     */
   def forFrame(base: Options, args: Seq[String]): Either[String, Options] =
     val (result, effects) = OParser.runParser(parser, args, base)
-    val errors            = effects.collect { case OEffect.ReportError(message) => message }
-    val help              = effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false }
+    val errors = effects.collect { case OEffect.ReportError(message) => clearer(message, args) }
+    val help   = effects.exists { case OEffect.DisplayToOut(_) => true; case _ => false }
     result match
       case _ if help || errors.nonEmpty =>
         Left(errors.headOption.getOrElse("--help is no render option"))
@@ -173,6 +173,54 @@ object Options:
 
   /** The usage text of `--help`. */
   def usage: String = OParser.usage(parser)
+
+  /** scopt's `message` said more plainly: an option given twice (which scopt calls unknown) is
+    * named as given twice, and a value an option's reader refused says what the option takes.
+    */
+  private def clearer(message: String, args: Seq[String]): String =
+    val unknown = "Unknown option "
+    val failed  = "Option (\\S+) failed when given '(.*)'\\. (.*)".r
+    message match
+      case failed(option, value, reason)     => s"$option $reason, got '$value'"
+      case _ if !message.startsWith(unknown) => message
+      case _                                 => twice(message.drop(unknown.length), args)
+
+  /** The message for option `named`, which scopt calls unknown: given twice, if it is one of
+    * ours, with the spellings used in `args`.
+    */
+  private def twice(named: String, args: Seq[String]): String =
+    spellings
+      .find(_.contains(named))
+      .map(names => names.filter(args.contains))
+      .fold(s"Unknown option $named") {
+        case List(one) => s"$one is given more than once"
+        case used      => s"$named is given more than once (as ${used.mkString(" and ")})"
+      }
+
+  /** Each option's spellings: its short `-x` and long `--xpix` names. */
+  private lazy val spellings: List[List[String]] =
+    parser.toList
+      .filter(o => o.name.nonEmpty)
+      .map(o => o.shortOpt.map("-" + _).toList :+ s"--${o.name}")
+
+  // The command line's numbers are written as the scene's are ([+-]?(d+.?d*|.d+)([eE][+-]?d+)?,
+  // an integer without point or exponent), not as the JDK's parsers also take them (0x10, 2f,
+  // 2d, 0x1p3): a malformed value is a usage error (cli.md). These givens stand before scopt's.
+  // Why: scopt's readers report a value they cannot read by throwing; it turns a
+  // NumberFormatException into "expects a number" and any other into the option's usage error.
+  private given scopt.Read[Int] = scopt.Read.reads { text =>
+    if !text.matches("[-+]?[0-9]+") then throw NumberFormatException(text)
+    else
+      text.toIntOption.getOrElse(
+        throw IllegalArgumentException(s"takes integers from ${Int.MinValue} to ${Int.MaxValue}")
+      )
+  }
+
+  // Why: as the integers' reader above (the scene's reader gives NaN for a malformed number).
+  private given scopt.Read[Double] = scopt.Read.reads { text =>
+    val value = tracer.io.Decimal.parse(text)
+    if java.lang.Double.isNaN(value) then throw NumberFormatException(text) else value
+  }
 
   private val builder = OParser.builder[Options]
 

@@ -37,7 +37,7 @@ object Encoding:
   def parse(text: String): Either[String, Encoding] =
     if text.equalsIgnoreCase("srgb") then Right(Srgb)
     else
-      text.trim.toDoubleOption.filter(g => g > 0 && g.isFinite) match
+      Some(tracer.io.Decimal.parse(text)).filter(g => g > 0 && g.isFinite) match
         case Some(1.0)   => Right(Linear)
         case Some(gamma) => Right(Power(gamma))
         case None        => Left(s"-g must be srgb or a number greater than 0, got '$text'")

@@ -51,6 +51,11 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
     val allowed =
       Vocabulary.SolidChildren ++ (if union then Vocabulary.UnionOnlyChildren else Set.empty)
     for
+      _ <- check(
+        at.placements.length < CsgReader.MaxNesting,
+        e,
+        s"CSG elements nested more than ${CsgReader.MaxNesting} deep"
+      )
       _ <- e.children.find(c => Vocabulary.UnionOnlyChildren(c.name) && !union) match
         case Some(c) => c.fail(s"<${c.name}> has no inside: it is allowed in a <union> only")
         case None    => Right(())
@@ -113,3 +118,12 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
       )
     case m: Mesh => m.transformed(p.transform)
     case other   => shapes.placed(other, p)
+
+/** The limits of [[CsgReader]]. */
+private[io] object CsgReader:
+  /** The most CSG elements one may stand inside: reading and tracing recurse once a level, at
+    * some 2.7 KB of stack a level in the reader, so 3,000 nested unions overflowed the command's
+    * 8 MB stack and 1,000 a JVM's default 1 MB (a program's own thread, a test's); 200 leave room
+    * on either, and far more than any scene nests.
+    */
+  val MaxNesting: Int = 200

@@ -1,7 +1,7 @@
 package tracer.io
 
 /** Numbers as the scene format writes them: finite decimals like `-1`, `0.25`, `2.5e-3`. */
-private[io] object Decimal:
+private[tracer] object Decimal:
 
   /** True when `text` is a number as a scene file may write it: `[+-]?(d+.?d*|.d+)([eE][+-]?d+)?`.
     *

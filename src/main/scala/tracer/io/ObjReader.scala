@@ -2,7 +2,7 @@ package tracer.io
 
 import java.io.{IOException, Reader}
 import java.nio.charset.StandardCharsets.UTF_8
-import java.nio.file.{Files, NoSuchFileException, Path}
+import java.nio.file.{Files, Path}
 import scala.collection.mutable
 import scala.util.control.NoStackTrace
 import tracer.geometry.SurfaceCoordinates
@@ -90,10 +90,7 @@ object ObjReader:
       val reader = Files.newBufferedReader(path, UTF_8)
       try parse(reader, name)
       finally reader.close()
-    catch
-      case _: NoSuchFileException => Left(s"$name: no such file")
-      case e: IOException         =>
-        Left(s"$name: ${Option(e.getMessage).getOrElse(e.getClass.getSimpleName)}")
+    catch case e: IOException => Left(s"$name: ${IoFailure.reason(e)}")
 
   /** Reads OBJ text line by line (lines end as `BufferedReader.readLine` ends them); `name`
     * names the file in errors.

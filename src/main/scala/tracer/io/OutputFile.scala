@@ -21,6 +21,8 @@ object OutputFile:
   def checkWritable(path: Path): Either[String, Unit] =
     val dir = Option(path.toAbsolutePath.getParent).getOrElse(Path.of("/"))
     if Files.isDirectory(path) then Left(s"cannot write '$path': it is a directory")
+    else if Files.exists(dir) && !Files.isDirectory(dir) then
+      Left(s"cannot write '$path': '$dir' is not a directory")
     else if !Files.isDirectory(dir) then Left(s"cannot write '$path': no such directory '$dir'")
     else if !Files.isWritable(dir) then
       Left(s"cannot write '$path': directory '$dir' is not writable")
@@ -54,7 +56,7 @@ object OutputFile:
       catch
         case NonFatal(e) =>
           temporary.foreach(Files.deleteIfExists)
-          Left(s"cannot write '$path': ${Option(e.getMessage).getOrElse(e.getClass.getSimpleName)}")
+          Left(s"cannot write '$path': ${IoFailure.reason(e)}")
       finally
         try Runtime.getRuntime.removeShutdownHook(cleanup)
         catch case _: IllegalStateException => () // already shutting down: the hook runs

@@ -1,6 +1,6 @@
 package tracer.io
 
-import java.nio.file.{Files, NoSuchFileException, Path, AccessDeniedException}
+import java.nio.file.{Files, Path}
 import tracer.image.{Bitmap, ImageFile, Texels}
 
 /** Loads texture images from files, relative paths resolved against a base directory. */
@@ -27,9 +27,6 @@ object TextureFiles:
         if Files.isDirectory(path) then Left("it is a directory")
         else Right(Files.readAllBytes(path))
       catch
-        case _: NoSuchFileException   => Left("no such file")
-        case _: AccessDeniedException => Left("permission denied")
-        case e: java.io.IOException   =>
-          Left(Option(e.getMessage).getOrElse(e.getClass.getSimpleName))
-        case _: OutOfMemoryError => Left("the file is too large to load")
+        case e: java.io.IOException => Left(IoFailure.reason(e))
+        case _: OutOfMemoryError    => Left("the file is too large to load")
     bytes

@@ -208,6 +208,31 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
     assertFailed(run(d, simple, "--frobnicate", "o.png"), 2, "frobnicate")
     assertNoFilesBut(d)
 
+  dir.test("standard input that cannot be read, and -i '', are one line and exit 1"): d =>
+    // Standard input redirected from a directory: reading it fails as the JDK's stdin does.
+    val directory = new java.io.InputStream:
+      def read(): Int = throw java.io.IOException("Is a directory") // Why: stdin's own failure
+    val (out, err) = (java.io.ByteArrayOutputStream(), java.io.ByteArrayOutputStream())
+    val status     = tracer.cli.Main.run(
+      List("-x", "8", "o.png"),
+      directory,
+      java.io.PrintStream(out, true),
+      java.io.PrintStream(err, true),
+      d
+    )
+    assertFailed(
+      Run(status, out.toString(UTF_8), err.toString(UTF_8)),
+      1,
+      "cannot read the scene from standard input: Is a directory"
+    )
+    assertFailed(run(d, "", "-i", "", "-x", "8", "o.png"), 1, "-i needs a file name")
+    assertNoFilesBut(d)
+
+  dir.test("an output whose directory is a file is one line naming it, exit 1"): d =>
+    Files.writeString(d.resolve("plain"), "not a directory")
+    assertFailed(run(d, simple, "-x", "8", "plain/o.png"), 1, "plain' is not a directory")
+    assertNoFilesBut(d, "plain")
+
   dir.test("--help prints the usage on stdout and exits 0"): d =>
     val r = run(d, "", "--help")
     assertEquals((r.status, r.err), (0, ""))

@@ -78,6 +78,40 @@ class OptionsSuite extends munit.FunSuite:
     assert(usageError("-z", "abc", "o.ppm").contains("abc"))
     assert(usageError("-r", "two", "o.ppm").contains("two"))
 
+  test("numbers are written as the scene's: hexadecimal, Java suffixes and commas are malformed"):
+    for (option, value) <- List(
+        "-x" -> "0x10",
+        "-y" -> "1,5",
+        "-p" -> "2L",
+        "-z" -> "2f",
+        "-w" -> "2d",
+        "-h" -> "0x1p3",
+        "-g" -> "2f",
+        "-g" -> "0x1p1",
+        "-g" -> " 2.2",
+        "-z" -> "1e",
+        "-z" -> "."
+      )
+    do assert(usageError(option, value, "o.ppm").contains(s"'$value'"), s"$option $value")
+    // The scene's own grammar: a sign, a leading or trailing point and an exponent are numbers.
+    assertEquals(options("-x", "+5", "o.ppm").columns, Some(5))
+    assertEquals(options("-z", ".5", "-w", "2.", "-h", "1e-1", "o.ppm").zoom, Some(0.5))
+
+  test("an integer beyond Int's range names the option and what it takes"):
+    assertEquals(
+      usageError("-x", "3000000000", "o.ppm"),
+      "--xpix takes integers from -2147483648 to 2147483647, got '3000000000'"
+    )
+
+  test("an option given twice is named as given twice, not as unknown"):
+    assertEquals(usageError("-x", "16", "-x", "8", "o.ppm"), "-x is given more than once")
+    assertEquals(usageError("-q", "-q", "o.ppm"), "-q is given more than once")
+    assertEquals(
+      usageError("--xpix", "8", "-x", "8", "o.ppm"),
+      "-x is given more than once (as -x and --xpix)"
+    )
+    assert(usageError("--bogus", "o.ppm").startsWith("Unknown option --bogus"))
+
   test("values out of range are usage errors"):
     assert(usageError("-r", "-1", "o.ppm").contains("-r"))
     assert(usageError("-p", "0", "o.ppm").contains("-p"))

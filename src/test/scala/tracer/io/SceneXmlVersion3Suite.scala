@@ -21,6 +21,18 @@ class SceneXmlVersion3Suite extends SceneDocuments:
   private val unitBox  = """<corner1 x="-1" y="-1" z="-1"/><corner2 x="1" y="1" z="1"/>"""
   private val unitBall = """<sphere radius="1"><centre x="0" y="0" z="0"/></sphere>"""
 
+  test("CSG nests up to 200 deep; the element beyond is refused with its line, not a crash"):
+    def nested(n: Int) = "<union>\n" * n + unitBall + "</union>" * n
+    // Read without the schema check: the JDK's validator stops at 100 levels of its own.
+    assertEquals(parse(withCamera(nested(CsgReader.MaxNesting))).map(_.objects.length), Right(1))
+    // withCamera puts the body on line 3: union k (from 1) stands on line 2 + k.
+    assertError(
+      nested(CsgReader.MaxNesting + 1),
+      3 + CsgReader.MaxNesting,
+      "union",
+      "CSG elements nested more than 200 deep"
+    )
+
   test("the four solids are read with their parts"):
     val read = objects(
       s"""<box>$unitBox</box>
