@@ -115,7 +115,14 @@ object Main:
         withProgress(err, band.size)(onRow => draw(scene, config, threads, onRow, band, format))
       )
       _ <- drawn.save(output).left.map(failure)
-    yield Math.max(0L, millis - drawn.encodingNanos / threads / 1000000)
+    yield renderMillis(millis, drawn.encodingNanos, threads)
+
+  /** The render's time for `-t`, in whole milliseconds: the draw's wall time less the threads'
+    * share of the time they spent encoding its file meanwhile (`encodingNanos`, summed over the
+    * `threads`), since the specification leaves the writing out; never below 0.
+    */
+  private[cli] def renderMillis(wallMillis: Long, encodingNanos: Long, threads: Int): Long =
+    Math.max(0L, wallMillis - encodingNanos / threads / 1000000)
 
   /** A rendered picture: how to save it, and how long the render's threads spent encoding its
     * file while they rendered (nanoseconds, summed over the threads), which the render's time

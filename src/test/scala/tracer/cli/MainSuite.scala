@@ -201,6 +201,13 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
     assertFailed(run(d, simple, "-x", "30000", "-y", "20000", "o.png"), 1, "too large for memory")
     assertNoFilesBut(d)
 
+  test("-t's time leaves out the threads' share of the PNG encoding done while rendering"):
+    assertEquals(Main.renderMillis(100, 60000000L, 2), 70L)
+    assertEquals(Main.renderMillis(100, 60000000L, 1), 40L)
+    assertEquals(Main.renderMillis(100, 0L, 4), 100L)
+    assertEquals(Main.renderMillis(100, 1999999L, 1), 99L) // whole milliseconds, down
+    assertEquals(Main.renderMillis(10, 60000000L, 1), 0L)  // never below 0
+
   dir.test("usage errors exit 2 and write nothing"): d =>
     assertFailed(run(d, simple), 2, "OUTPUT")
     assertFailed(run(d, simple, "-r", "-2", "o.png"), 2, "-r")
