@@ -259,7 +259,11 @@ private final class ObjParser(reader: Reader, name: String):
         slashes += 1
         if slashes == 1 then slash1 = i else if slashes == 2 then slash2 = i
       i += 1
-    if slashes > 2 || slash1 == from then fail(s"malformed face vertex '${string(from, to)}'")
+    // Only v, v/vt, v//vn and v/vt/vn: an index left empty (1/, 1/2/, 1//) is malformed.
+    val emptyTexture = slashes == 1 && slash1 + 1 == to
+    val emptyNormal  = slashes == 2 && slash2 + 1 == to
+    if slashes > 2 || slash1 == from || emptyTexture || emptyNormal then
+      fail(s"malformed face vertex '${string(from, to)}'")
     cornerV(k) = index(from, slash1, vertexCount, "vertex")
     cornerT(k) =
       if slash1 + 1 < slash2 then index(slash1 + 1, slash2, textureCount, "texture coordinate")

@@ -107,6 +107,9 @@ class ObjReaderSuite extends munit.FunSuite:
     assertError("v 1 1e999 3\n", "malformed number")
     assertError(square + "f 1 2", "line 10", "at least three vertices, got 2")
     assertError(square + "f 1/2/3/4 2 3", "malformed face vertex")
+    // An index left empty is none of v, v/vt, v//vn, v/vt/vn.
+    for corner <- List("1/", "1//", "1/1/", "/1") do
+      assertError(square + s"f $corner 2 3", "line 10", s"malformed face vertex '$corner'")
 
   test("an index out of range is an error"):
     assertError(square + "f 1 2 5", "line 10", "vertex index 5 is out of range", "4 defined so far")
