@@ -184,6 +184,8 @@ object Renderer:
       n: Int
   ) extends Frame:
     private val offsets = Renderer.sampleOffsets(n).toArray
+    // The clear objects around the camera, which its rays start inside (empty in most scenes).
+    private val eyeInsides = world.containing(projection.origin)
     // The 8-bit samples of the encoding, shared by the rows (the picture is a bitmap of maxval
     // 255: Bitmap.byRows).
     private val levels = ByteLevels(config.encoding)
@@ -226,7 +228,7 @@ object Renderer:
     private inline def centre(shading: Shading, x: Int, y: Int): Unit =
       val o = projection.origin
       projection.direction(x + 0.5, y + 0.5)((dx, dy, dz) =>
-        shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+        shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth, eyeInsides)
       )
 
     /** Stores the pixel (r, g, b) as (x, at) through `out`, encoded as the picture's encoding
@@ -265,7 +267,7 @@ object Renderer:
         var i = 0
         while i < n do
           projection.direction(x + offsets(i), y + offsets(j))((dx, dy, dz) =>
-            shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth)
+            shading.trace(o.x, o.y, o.z, dx, dy, dz, config.depth, eyeInsides)
           )
           if inRange then
             Colour.inRangeOf(shading.r, shading.g, shading.b) { (sr, sg, sb) =>

@@ -29,7 +29,9 @@ final class Shading(world: World, mode: ShadingMode):
     Colour(red, green, blue)
 
   /** [[colour]] of the ray from (ox, oy, oz) in unit direction (dx, dy, dz), left in [[r]], [[g]]
-    * and [[b]] (the renderer's path: no `Ray` or `Colour` is made).
+    * and [[b]] (the renderer's path: no `Ray` or `Colour` is made); `insides` are the objects
+    * that let light through around the ray's start, innermost first ([[World.containing]]:
+    * empty unless the camera stands inside glass).
     */
   def trace(
       ox: Double,
@@ -38,9 +40,10 @@ final class Shading(world: World, mode: ShadingMode):
       dx: Double,
       dy: Double,
       dz: Double,
-      depth: Int
+      depth: Int,
+      insides: List[Int] = Nil
   ): Unit =
-    traceFrom(ox, oy, oz, dx, dy, dz, depth, Nil)
+    traceFrom(ox, oy, oz, dx, dy, dz, depth, insides)
 
   /** The red channel of the last [[trace]]. */
   def r: Double = red

@@ -583,6 +583,15 @@ final class World(
       case Some(tree) => tree.occluded(ox, oy, oz, dx, dy, dz, limit, query)
       case None       => false)
 
+  /** The shapes that let light through and hold `point` inside them, innermost first: the list
+    * a ray starting at `point` carries across their surfaces ([[Refraction]]). As POV-Ray's
+    * `InitRayContainerState` finds the objects around the camera, so that a camera inside a glass
+    * sphere looks out through it; of several around the point, the later in the scene counts as
+    * the inner.
+    */
+  def containing(point: Vec3): List[Int] =
+    clearShapes.toList.filter(i => Shape.inside(shapes(i), point)).reverse
+
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).
     */

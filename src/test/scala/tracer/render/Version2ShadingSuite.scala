@@ -56,6 +56,35 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
       1e-12
     )
 
+  // A camera inside a glass ball of ior 1.5, off its centre: the one pixel's ray leaves the
+  // glass 30° off the normal and bends away from it (η = 1.5, to 48.6°), as POV-Ray's camera
+  // inside an object does; a small glowing ball waits where that ray goes and nowhere near where
+  // a ray taken as entering glass (η = 1/1.5, to 19.5°) would go.
+  test("a camera inside glass looks out through it: its rays leave the glass, η = n/1"):
+    val eye   = Vec3(0.5, 0, 0)
+    val glass = SceneObject(
+      Sphere(Vec3.Zero, 1),
+      Surface(diffuse = 0, transmit = 1, ior = 1.5)
+    )
+    val exit   = Vec3(0.5, 0, Math.sqrt(0.75))
+    val out    = Refraction.refract(Vec3.UnitZ, exit, 1.5).getOrElse(fail("no refraction"))
+    val target = SceneObject(
+      Sphere(exit + out * 4, 0.3),
+      Surface(diffuse = 0, emission = Colour(0, 1, 0))
+    )
+    val scene = Scene(Camera(eye, eye + Vec3.UnitZ), Colour.Black, Nil, List(glass, target))
+    assertEquals(World(scene).containing(eye), List(0))
+    assertEquals(samples(render(scene)), List(0, 255, 0))
+
+  test("the clear objects around a point, the later in the scene first; opaque ones not"):
+    val ball   = SceneObject(Sphere(Vec3.Zero, 2), Surface(transmit = 0.5, ior = 1.3))
+    val inner  = SceneObject(Sphere(Vec3.Zero, 1), Surface(transmit = 0.9, ior = 1.5))
+    val opaque = SceneObject(Sphere(Vec3.Zero, 3), Surface())
+    val world  = World(Scene(camera, Colour.Black, Nil, List(ball, opaque, inner)))
+    assertEquals(world.containing(Vec3.Zero), List(2, 0))
+    assertEquals(world.containing(Vec3(1.5, 0, 0)), List(0))
+    assertEquals(world.containing(Vec3(5, 0, 0)), Nil)
+
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
     assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)
