@@ -178,7 +178,7 @@ object Mitsuba:
 
   private val Identity = Affine(identity, 1)
 
-  /** The half-size of a plane's twin on each side of the point nearest the camera. */
+  /** The half-size of a plane's twin on each side of the plane's point nearest the origin. */
   private val PlaneReach = 1e5
 
   private def twins(o: SceneObject, index: Int): Either[String, Vector[Part]] =
