@@ -35,8 +35,20 @@ enum Emitter:
   /** A glowing sphere (shape `index` of the world), drawn by the solid angle it fills. */
   case Ball(index: Int, sphere: Sphere, emission: Colour)
 
-  /** A glowing triangle (shape `index`, or a face of the mesh that is), drawn uniformly by area. */
+  /** A glowing triangle (shape `index`), drawn uniformly by area. */
   case Face(index: Int, triangle: Triangle, emission: Colour, area: Double)
+
+  /** A glowing mesh (shape `index`), one emitter drawn uniformly by area over all its faces, as
+    * Mitsuba draws a mesh emitter: a face by its share of the area (`shares`, the faces' areas
+    * summed in order over their `area`), then a point on it.
+    */
+  case Faces(
+      index: Int,
+      faces: IArray[Triangle],
+      shares: IArray[Double],
+      emission: Colour,
+      area: Double
+  )
 
   /** The background, radiance B from every direction no surface blocks, drawn uniformly over
     * the sphere of directions.
@@ -44,10 +56,10 @@ enum Emitter:
   case Sky(radiance: Colour)
 
 /** The emitters of a scene that next-event estimation samples: its point and area lights, its
-  * glowing spheres, triangles and meshes' faces (top-level shapes, not inside a placement or a
-  * combination; each face of a mesh an emitter of its own, as when each was a triangle), and
-  * the sky when the background is not black. Each is chosen with the same chance 1/count. Glowing
-  * planes, solids and combinations are found by the paths alone.
+  * glowing spheres, triangles and meshes (top-level shapes, not inside a placement or a
+  * combination; a mesh one emitter over all its faces, as Mitsuba's), and the sky when the
+  * background is not black. Each is chosen with the same chance 1/count. Glowing planes, solids
+  * and combinations are found by the paths alone.
   *
   * @param world `scene` compiled: its lights' sub-lights are the world's
   */
@@ -64,7 +76,7 @@ final class Emitters(scene: Scene, world: World):
         o.shape match
           case s: Sphere   => Vector(Emitter.Ball(i, s, o.surface.emission))
           case t: Triangle => Vector(face(i, t, o.surface.emission))
-          case m: Mesh     => m.faces.map(face(i, _, o.surface.emission)).toVector
+          case m: Mesh     => Vector(faces(i, m, o.surface.emission))
           case _           => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
@@ -85,14 +97,27 @@ final class Emitters(scene: Scene, world: World):
     val slots = Array.fill(scene.objects.size)(-1)
     all.indices.reverse.foreach(k =>
       all(k) match
-        case Emitter.Ball(i, _, _)    => slots(i) = k
-        case Emitter.Face(i, _, _, _) => slots(i) = k
-        case _                        => ()
+        case Emitter.Ball(i, _, _)        => slots(i) = k
+        case Emitter.Face(i, _, _, _)     => slots(i) = k
+        case Emitter.Faces(i, _, _, _, _) => slots(i) = k
+        case _                            => ()
     )
     slots
 
   private def face(i: Int, t: Triangle, emission: tracer.image.Colour): Emitter =
-    Emitter.Face(i, t, emission, t.a.cross(t.b).length / 2)
+    Emitter.Face(i, t, emission, Emitters.areaOf(t))
+
+  private def faces(i: Int, m: Mesh, emission: tracer.image.Colour): Emitter =
+    val triangles = IArray.from(m.faces)
+    val areas     = triangles.map(Emitters.areaOf)
+    val total     = areas.sum
+    Emitter.Faces(
+      i,
+      triangles,
+      IArray.from(areas.scanLeft(0.0)(_ + _).tail.map(_ / total)),
+      emission,
+      total
+    )
 
   /** True when there is nothing to sample. */
   def isEmpty: Boolean = count == 0
@@ -127,18 +152,34 @@ final class Emitters(scene: Scene, world: World):
   ): Double =
     if ofShape(i) < 0 then 0.0
     else
-      // A sphere's and a triangle's hits are on leaf 0; a mesh's faces follow its first in order.
-      table(ofShape(i) + leaf) match
-        case Emitter.Ball(_, sphere, _)  => Emitters.coneDensity(sphere, fx, fy, fz) / count
-        case Emitter.Face(_, t, _, area) =>
-          val wx = px - fx
-          val wy = py - fy
-          val wz = pz - fz
-          val d2 = wx * wx + wy * wy + wz * wz
-          val n  = t.normal
-          val c  = -(wx * n.x + wy * n.y + wz * n.z) / Math.sqrt(d2)
-          if c <= 0 then 0.0 else d2 / (area * c) / count
+      // A sphere's and a triangle's hits are on leaf 0; a mesh's leaf names its face.
+      table(ofShape(i)) match
+        case Emitter.Ball(_, sphere, _)          => Emitters.coneDensity(sphere, fx, fy, fz) / count
+        case Emitter.Face(_, t, _, area)         => areaDensity(t, area, fx, fy, fz, px, py, pz)
+        case Emitter.Faces(_, faces, _, _, area) =>
+          areaDensity(faces(leaf), area, fx, fy, fz, px, py, pz)
         case _ => 0.0
+
+  /** The density per unit solid angle, choice included, of drawing the point (px, py, pz) on the
+    * front of triangle `t` from (fx, fy, fz), points drawn uniformly over an emitter of `area`.
+    */
+  private def areaDensity(
+      t: Triangle,
+      area: Double,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      px: Double,
+      py: Double,
+      pz: Double
+  ): Double =
+    val wx = px - fx
+    val wy = py - fy
+    val wz = pz - fz
+    val d2 = wx * wx + wy * wy + wz * wz
+    val n  = t.normal
+    val c  = -(wx * n.x + wy * n.y + wz * n.z) / Math.sqrt(d2)
+    if c <= 0 then 0.0 else d2 / (area * c) / count
 
   /** A light for the point `p`, chosen by `choice` among the emitters, with a point on it (or a
     * direction) from (u1, u2), each uniform in [0, 1).
@@ -192,27 +233,11 @@ final class Emitters(scene: Scene, world: World):
         val l = Emitters.ball(sphere, emission, Vec3(px, py, pz), u1, u2, count)
         val d = l.direction
         out.light(d.x, d.y, d.z, l.distance, l.value.r, l.value.g, l.value.b, l.density)
-      case Emitter.Face(_, t, emission, area) =>
-        val su = Math.sqrt(u1)
-        val a  = 1 - su
-        val b  = su * (1 - u2)
-        val c  = su * u2
-        val wx = t.t0.x * a + t.t1.x * b + t.t2.x * c - px
-        val wy = t.t0.y * a + t.t1.y * b + t.t2.y * c - py
-        val wz = t.t0.z * a + t.t1.z * b + t.t2.z * c - pz
-        val d2 = wx * wx + wy * wy + wz * wz
-        val d  = Math.sqrt(d2)
-        if d <= 0 then out.dark()
-        else
-          val dx     = wx / d
-          val dy     = wy / d
-          val dz     = wz / d
-          val n      = t.normal
-          val facing = -(dx * n.x + dy * n.y + dz * n.z)
-          if facing <= 0 then out.dark()
-          else
-            val pdf = d2 / (area * facing) / count
-            out.light(dx, dy, dz, d, emission.r / pdf, emission.g / pdf, emission.b / pdf, pdf)
+      case Emitter.Face(_, t, emission, area) => pointOn(out, t, emission, area, px, py, pz, u1, u2)
+      case Emitter.Faces(_, faces, shares, emission, area) =>
+        // The face by its share of the area, from what is left of the choice (uniform in [0, 1)).
+        val f = Emitters.pick(shares, rest)
+        pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
       case Emitter.Sky(radiance) =>
         val z   = 1 - 2 * u1
         val r   = Math.sqrt(Math.max(0.0, 1 - z * z))
@@ -228,8 +253,59 @@ final class Emitters(scene: Scene, world: World):
           pdf
         )
 
+  /** A point drawn uniformly on triangle `t` (√u₁ and u₂ barycentrically) of an emitter of
+    * `area` glowing `emission`, seen from (px, py, pz), into `out` (dark where its front does
+    * not face the point).
+    */
+  private def pointOn(
+      out: Scratch,
+      t: Triangle,
+      emission: Colour,
+      area: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      u1: Double,
+      u2: Double
+  ): Unit =
+    val su = Math.sqrt(u1)
+    val a  = 1 - su
+    val b  = su * (1 - u2)
+    val c  = su * u2
+    val wx = t.t0.x * a + t.t1.x * b + t.t2.x * c - px
+    val wy = t.t0.y * a + t.t1.y * b + t.t2.y * c - py
+    val wz = t.t0.z * a + t.t1.z * b + t.t2.z * c - pz
+    val d2 = wx * wx + wy * wy + wz * wz
+    val d  = Math.sqrt(d2)
+    if d <= 0 then out.dark()
+    else
+      val dx     = wx / d
+      val dy     = wy / d
+      val dz     = wz / d
+      val n      = t.normal
+      val facing = -(dx * n.x + dy * n.y + dz * n.z)
+      if facing <= 0 then out.dark()
+      else
+        val pdf = d2 / (area * facing) / count
+        out.light(dx, dy, dz, d, emission.r / pdf, emission.g / pdf, emission.b / pdf, pdf)
+
 /** Sampling spheres by solid angle, and a light's fade. */
 object Emitters:
+  /** The area of triangle `t`. */
+  def areaOf(t: Triangle): Double = t.a.cross(t.b).length / 2
+
+  /** The first k whose running share `shares(k)` exceeds `u` (the last when rounding leaves none):
+    * index k drawn with chance shares(k) − shares(k − 1) for u uniform in [0, 1).
+    */
+  def pick(shares: IArray[Double], u: Double): Int =
+    // Why: a binary search over the running shares.
+    var lo = 0
+    var hi = shares.length - 1
+    while lo < hi do
+      val mid = (lo + hi) >>> 1
+      if shares(mid) > u then hi = mid else lo = mid + 1
+    lo
+
   /** A(d) of `light` for the point (qx, qy, qz) it lights from `at` (a point light's location or
     * one of an area light's sub-lights): d = |at − q|, measured from the point itself, not from
     * the shadow ray's start just off it; 1 without fade.

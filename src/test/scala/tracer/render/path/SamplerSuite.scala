@@ -3,7 +3,7 @@ package tracer.render.path
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Sphere, Triangle}
+import tracer.geometry.{Mesh, Ray, Shape, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
 import tracer.render.{SamplerKind, World}
@@ -96,6 +96,49 @@ class SamplerSuite extends ScalaCheckSuite:
         val shape = if (q - Vec3(1, 2, 3)).length < 0.7 + 1e-6 then 0 else 1
         assertEqualsDouble(emitters.density(shape, p, q), s.density, 1e-6 * s.density)
       else if !s.dark then assertEqualsDouble(s.density, emitters.skyDensity, 0)
+    }
+
+  // A glowing mesh of four faces of different sizes in the plane z = 2, facing −z: one emitter,
+  // a point drawn by area over all of it (as Mitsuba's mesh emitter), not four.
+  private val fan = Mesh(
+    IArray(0.0, 0, 2, 2, 0, 2, 2, 0.5, 2, 0, 1.5, 2, -3, 0, 2, 0, -2, 2),
+    IArray(0, 2, 1, 0, 3, 2, 0, 4, 3, 0, 1, 5)
+  )
+  private val glowingFan =
+    Scene(
+      Camera(Vec3(0, 0, -5), Vec3.Zero),
+      Colour.Black,
+      Nil,
+      List(SceneObject(fan, Surface(emission = Colour.White)))
+    )
+  private val fanEmitters = Emitters(glowingFan, World(glowingFan))
+
+  test("a glowing mesh is one emitter, its faces drawn by their shares of its area"):
+    assertEquals(fanEmitters.all.length, 1)
+    val shares = IArray(0.1, 0.5, 1.0)
+    assertEquals(
+      List(0.0, 0.0999, 0.1, 0.4999, 0.5, 0.9999).map(Emitters.pick(shares, _)),
+      List(0, 0, 1, 1, 2, 2)
+    )
+
+  property("a glowing mesh's sample density is what density() gives for the face it reaches"):
+    forAll(
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-4.0, 1.5),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0)
+    ) { (x, y, z, choice, u1, u2) =>
+      val p = Vec3(x, y, z)
+      val s = fanEmitters.sample(p, choice, u1, u2)
+      if !s.dark then
+        val q    = p + s.direction * s.distance
+        val leaf = fan.faces.indexWhere(t =>
+          Math.abs(Shape.distance(t, Ray(p, s.direction)) - s.distance) < 1e-9 * s.distance
+        )
+        assert(leaf >= 0, s"no face at $q")
+        assertEqualsDouble(fanEmitters.density(0, p, q, leaf), s.density, 1e-6 * s.density)
     }
 
   test("a sphere sampled by solid angle: the estimate of its solid angle is exact"):
