@@ -35,7 +35,6 @@ private[cli] object Inputs:
   def read(file: Path, what: String): Either[String, Array[Byte]] =
     try
       if Files.isDirectory(file) then Left(s"cannot read $what: it is a directory")
-      else if !Files.exists(file) then Left(s"cannot read $what: no such file")
       else Right(Files.readAllBytes(file))
     catch case e: IOException => Left(s"cannot read $what: ${IoFailure.reason(e)}")
 

@@ -21,9 +21,9 @@ object OutputFile:
   def checkWritable(path: Path): Either[String, Unit] =
     val dir = Option(path.toAbsolutePath.getParent).getOrElse(Path.of("/"))
     if Files.isDirectory(path) then Left(s"cannot write '$path': it is a directory")
-    else if Files.exists(dir) && !Files.isDirectory(dir) then
-      Left(s"cannot write '$path': '$dir' is not a directory")
-    else if !Files.isDirectory(dir) then Left(s"cannot write '$path': no such directory '$dir'")
+    else if !Files.isDirectory(dir) then
+      if Files.exists(dir) then Left(s"cannot write '$path': '$dir' is not a directory")
+      else Left(s"cannot write '$path': no such directory '$dir'")
     else if !Files.isWritable(dir) then
       Left(s"cannot write '$path': directory '$dir' is not writable")
     else if Files.exists(path) && !Files.isWritable(path) then

@@ -35,12 +35,10 @@ enum Emitter:
   /** A glowing sphere (shape `index` of the world), drawn by the solid angle it fills. */
   case Ball(index: Int, sphere: Sphere, emission: Colour)
 
-  /** A glowing triangle (shape `index`), drawn uniformly by area. */
-  case Face(index: Int, triangle: Triangle, emission: Colour, area: Double)
-
-  /** A glowing mesh (shape `index`), one emitter drawn uniformly by area over all its faces, as
-    * Mitsuba draws a mesh emitter: a face by its share of the area (`shares`, the faces' areas
-    * summed in order over their `area`), then a point on it.
+  /** A glowing triangle or mesh (shape `index`), one emitter drawn uniformly by area over all
+    * its faces, as Mitsuba draws a mesh emitter: a face by its share of the area (`shares`, the
+    * faces' areas summed in order over their `area`), then a point on it. A triangle is the one
+    * face of its own.
     */
   case Faces(
       index: Int,
@@ -75,8 +73,8 @@ final class Emitters(scene: Scene, world: World):
       case (o, i) if o.leafSurfaces.isEmpty && o.surface.emits =>
         o.shape match
           case s: Sphere   => Vector(Emitter.Ball(i, s, o.surface.emission))
-          case t: Triangle => Vector(face(i, t, o.surface.emission))
-          case m: Mesh     => Vector(faces(i, m, o.surface.emission))
+          case t: Triangle => Vector(faces(i, IArray(t), o.surface.emission))
+          case m: Mesh     => Vector(faces(i, IArray.from(m.faces), o.surface.emission))
           case _           => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
@@ -98,22 +96,18 @@ final class Emitters(scene: Scene, world: World):
     all.indices.reverse.foreach(k =>
       all(k) match
         case Emitter.Ball(i, _, _)        => slots(i) = k
-        case Emitter.Face(i, _, _, _)     => slots(i) = k
         case Emitter.Faces(i, _, _, _, _) => slots(i) = k
         case _                            => ()
     )
     slots
 
-  private def face(i: Int, t: Triangle, emission: tracer.image.Colour): Emitter =
-    Emitter.Face(i, t, emission, Emitters.areaOf(t))
-
-  private def faces(i: Int, m: Mesh, emission: tracer.image.Colour): Emitter =
-    val triangles = IArray.from(m.faces)
-    val areas     = triangles.map(Emitters.areaOf)
-    val total     = areas.sum
+  /** The emitter of shape `i`, glowing `emission` over `faces` (a triangle's one, a mesh's all). */
+  private def faces(i: Int, faces: IArray[Triangle], emission: tracer.image.Colour): Emitter =
+    val areas = faces.map(Emitters.areaOf)
+    val total = areas.sum
     Emitter.Faces(
       i,
-      triangles,
+      faces,
       IArray.from(areas.scanLeft(0.0)(_ + _).tail.map(_ / total)),
       emission,
       total
@@ -155,7 +149,6 @@ final class Emitters(scene: Scene, world: World):
       // A sphere's and a triangle's hits are on leaf 0; a mesh's leaf names its face.
       table(ofShape(i)) match
         case Emitter.Ball(_, sphere, _)          => Emitters.coneDensity(sphere, fx, fy, fz) / count
-        case Emitter.Face(_, t, _, area)         => areaDensity(t, area, fx, fy, fz, px, py, pz)
         case Emitter.Faces(_, faces, _, _, area) =>
           areaDensity(faces(leaf), area, fx, fy, fz, px, py, pz)
         case _ => 0.0
@@ -233,7 +226,6 @@ final class Emitters(scene: Scene, world: World):
         val l = Emitters.ball(sphere, emission, Vec3(px, py, pz), u1, u2, count)
         val d = l.direction
         out.light(d.x, d.y, d.z, l.distance, l.value.r, l.value.g, l.value.b, l.density)
-      case Emitter.Face(_, t, emission, area) => pointOn(out, t, emission, area, px, py, pz, u1, u2)
       case Emitter.Faces(_, faces, shares, emission, area) =>
         // The face by its share of the area, from what is left of the choice (uniform in [0, 1)).
         val f = Emitters.pick(shares, rest)
