@@ -31,9 +31,20 @@ object Refraction:
       inline k: (Double, List[Int]) => A
   ): A = insides match
     case Nil          => k(1 / ior(i), List(i))
-    case `i` :: outer => k(ior(i) / (if outer.isEmpty then 1.0 else ior(outer.head)), outer)
-    case _ if insides.contains(i) => k(1.0, insides.filterNot(_ == i)) // leaving an overlap
+    case `i` :: outer =>
+      val beyond = if outer.contains(i) then withoutOutermost(insides, i) else outer
+      k(ior(i) / (if beyond.isEmpty then 1.0 else ior(beyond.head)), beyond)
+    case _ if insides.contains(i) => k(1.0, withoutOutermost(insides, i)) // leaving an overlap
     case innermost :: _           => k(ior(innermost) / ior(i), i :: insides)
+
+  /** `insides` without its outermost (last) `i`: POV-Ray's `Ray::RemoveInterior` takes out the
+    * first of its list, which runs outermost first. An object is in a ray's list twice only when
+    * the ray started inside two parts of a glass union ([[World.containing]]); leaving it then
+    * leaves the ray inside it still, so the ray goes on straight (η = 1), as in POV-Ray.
+    */
+  private[render] def withoutOutermost(insides: List[Int], i: Int): List[Int] =
+    val last = insides.lastIndexOf(i)
+    insides.take(last) ++ insides.drop(last + 1)
 
   /** The direction of a ray going `direction` (unit) after crossing a surface whose unit normal is
     * `normal` with ratio `eta` (Heckbert's formula), or `None` for total internal reflection.

@@ -2,7 +2,7 @@ package tracer.render
 
 import scala.concurrent.{Await, ExecutionContext, Future}
 import scala.concurrent.duration.Duration
-import tracer.geometry.{Hit, Mesh, Ray, Shape}
+import tracer.geometry.{Csg, CsgOperation, Hit, Mesh, Placed, Ray, Shape}
 import tracer.math.Vec3
 import tracer.scene.{Light, Scene, SceneObject, Surface}
 
@@ -587,10 +587,12 @@ final class World(
     * a ray starting at `point` carries across their surfaces ([[Refraction]]). As POV-Ray's
     * `InitRayContainerState` finds the objects around the camera, so that a camera inside a glass
     * sphere looks out through it; of several around the point, the later in the scene counts as
-    * the inner.
+    * the inner. A glass union is listed once for each of its parts that holds the point
+    * ([[World.partsHolding]]), as POV-Ray, which splits a union into its children, lists the
+    * union's interior once for each child around its camera.
     */
   def containing(point: Vec3): List[Int] =
-    clearShapes.toList.filter(i => Shape.inside(shapes(i), point)).reverse
+    clearShapes.toList.flatMap(i => List.fill(World.partsHolding(shapes(i), point))(i)).reverse
 
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).
@@ -605,6 +607,15 @@ final class World(
 
 /** Precomputation for [[World]]. */
 object World:
+  /** How many of the parts POV-Ray splits `shape` into hold `point`: a union is split into its
+    * children (nested unions likewise, placed or not), any other shape is one part; 0 when the
+    * point lies outside it.
+    */
+  private[render] def partsHolding(shape: Shape, point: Vec3): Int = shape match
+    case Csg(CsgOperation.Union, children) => children.map(partsHolding(_, point)).sum
+    case p: Placed                         => partsHolding(p.shape, p.transform.pointBack(point))
+    case _                                 => if Shape.inside(shape, point) then 1 else 0
+
   /** The most shapes a world may have for its area lights' shadow rays to be tested shape by
     * shape in the beam ([[World.beams]]): beyond it the tree's walk is the better cull.
     */

@@ -1,8 +1,8 @@
 package tracer.render
 
-import tracer.geometry.{Csg, CsgOperation, Plane, Shape, Sphere, Triangle}
+import tracer.geometry.{Csg, CsgOperation, Placed, Plane, Shape, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour, Encoding}
-import tracer.math.Vec3
+import tracer.math.{Placement, Vec3}
 import tracer.scene.*
 import tracer.testkit.Approx
 import tracer.testkit.Scenes.{camera, matte}
@@ -84,6 +84,49 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     assertEquals(world.containing(Vec3.Zero), List(2, 0))
     assertEquals(world.containing(Vec3(1.5, 0, 0)), List(0))
     assertEquals(world.containing(Vec3(5, 0, 0)), Nil)
+
+  // POV-Ray splits a union into its children, each with the union's interior, and lists that
+  // interior once for each child around the camera.
+  test("a glass union is around a point once for each of its parts that holds it"):
+    def part(x: Double) = Sphere(Vec3(x, 0, 0), 0.8)
+    val nested          = Csg(CsgOperation.Union, Vector(part(0.3), part(0.5)))
+    val union           = Csg(CsgOperation.Union, Vector(part(-0.3), nested))
+    val placed          = Placed(union, Placement(translate = Vec3(0, 0, 10)))
+    val cut             = Csg(CsgOperation.Intersection, Vector(part(-0.3), part(0.3)))
+    val glass           = Surface(transmit = 0.9, ior = 1.4)
+    val world           = World(
+      Scene(camera, Colour.Black, Nil, List(SceneObject(union, glass), SceneObject(cut, glass)))
+    )
+    assertEquals(world.containing(Vec3.Zero), List(1, 0, 0, 0))
+    assertEquals(world.containing(Vec3(-0.9, 0, 0)), List(0))
+    assertEquals(world.containing(Vec3(2, 0, 0)), Nil)
+    assertEquals(World.partsHolding(placed, Vec3(0.4, 0, 10)), 3)
+    assertEquals(World.partsHolding(placed, Vec3(0.4, 0, 0)), 0)
+
+  test("leaving an object listed twice leaves the ray inside it, η = 1, as POV-Ray's list does"):
+    val ior = Map(0 -> 1.4, 1 -> 1.2)
+    assertEquals(Refraction.cross(List(0, 0), 0, ior), (1.0, List(0)))
+    assertEquals(Refraction.cross(List(0, 1, 0), 0, ior), (1.0, List(0, 1)))
+    assertEquals(Refraction.cross(List(1, 0, 0), 0, ior), (1.0, List(1, 0)))
+    assertEquals(Refraction.cross(List(0, 0), 1, ior), (1.4 / 1.2, List(1, 0, 0)))
+
+  // A camera inside both spheres of a glass union of ior 1.4: its one ray crosses the small
+  // sphere's surface inside the large one (the union still around it: straight on), then leaves
+  // the large one 30° off the normal, bending once as leaving glass, to a glowing ball. Listed
+  // once, the ray would bend leaving glass at the inner surface and again entering at the outer.
+  test("a camera inside two parts of a glass union bends once, where its ray leaves the union"):
+    val eye    = Vec3(0.5, 0, 0)
+    val union  = Csg(CsgOperation.Union, Vector(Sphere(Vec3.Zero, 1), Sphere(Vec3(0.2, 0, 0), 0.5)))
+    val glass  = SceneObject(union, Surface(diffuse = 0, transmit = 1, ior = 1.4))
+    val exit   = Vec3(0.5, 0, Math.sqrt(0.75))
+    val out    = Refraction.refract(Vec3.UnitZ, exit, 1.4).getOrElse(fail("no refraction"))
+    val target = SceneObject(
+      Sphere(exit + out * 4, 0.3),
+      Surface(diffuse = 0, emission = Colour(0, 1, 0))
+    )
+    val scene = Scene(Camera(eye, eye + Vec3.UnitZ), Colour.Black, Nil, List(glass, target))
+    assertEquals(World(scene).containing(eye), List(0, 0))
+    assertEquals(samples(render(scene)), List(0, 255, 0))
 
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
