@@ -44,6 +44,15 @@ object Inheritance:
       .filter(_ => checker(surface))
       .getOrElse(0)
 
+  /** True when `surface` carries a checker whose space is none of the places [[depth]] tries for
+    * it among `chain` inside `enclosing`: a shape whose placement was built into it (a triangle
+    * or mesh of a union split into its children) while its pattern stays in the union's space.
+    */
+  def unplaced(surface: Surface, chain: List[Placement], enclosing: List[Placement]): Boolean =
+    checker(surface) && !(0 to chain.length).exists(k =>
+      lies(surface, space(chain.drop(k) ++ enclosing))
+    )
+
   /** The pattern space of each leaf of `s` (as a surface of its own would have it) inside
     * elements placed by `placements`, innermost first.
     */

@@ -83,8 +83,15 @@ object PovRay:
       val moves        = chain.map(placement)
       val interior     =
         look.fold(_ => "", top => if top.ior != 1 then s"interior { ior ${num(top.ior)} } " else "")
-      " " + moves.take(at).mkString + written.fold("")(texture(_) + " ") + moves.drop(at).mkString +
-        interior + "}"
+      // A checker whose space none of the transforms reach (the shape's placement built into
+      // its corners) carries that space's transforms itself, after all the shape's.
+      written.filter(Inheritance.unplaced(_, chain, enclosing)) match
+        case Some(surface) =>
+          " " + moves.mkString + texture(surface, ownSpace(surface, enclosing)) + " " + interior +
+            "}"
+        case None =>
+          " " + moves.take(at).mkString + written.fold("")(texture(_) + " ") +
+            moves.drop(at).mkString + interior + "}"
     def leafRest = rest(Some(o.surfaceOf(leaf)))
     s match
       case s: Sphere    => s"sphere { ${vec(s.centre)}, ${num(s.radius)}$leafRest"
@@ -124,13 +131,25 @@ object PovRay:
   private def placement(p: Placement): String =
     s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "
 
-  private def texture(f: Surface): String =
+  /** The placements of `surface`'s checker space that lie inside elements placed by `enclosing`
+    * (whose transforms move the texture after the shape's own), innermost first.
+    */
+  private def ownSpace(surface: Surface, enclosing: List[Placement]): List[Placement] =
+    surface.pigment match
+      case c: Pigment.Checker =>
+        val outer = Inheritance.space(enclosing)
+        if c.space.endsWith(outer) then c.space.dropRight(outer.length) else c.space
+      case Pigment.Solid(_) | Pigment.Textured(_) => Nil
+
+  /** POV-Ray's texture for `f`, its pattern moved by `moves` (innermost first) of its own. */
+  private def texture(f: Surface, moves: List[Placement] = Nil): String =
     def rgbt(c: Colour) = s"rgbt <${num(c.r)}, ${num(c.g)}, ${num(c.b)}, ${num(f.transmit)}>"
     val pigment         = f.pigment match
       case Pigment.Solid(c)    => s"color ${rgbt(c)}"
       case Pigment.Textured(_) => s"color ${rgbt(Colour.grey(0.5))}"
       case c: Pigment.Checker  =>
-        s"checker color ${rgbt(c.first)}, color ${rgbt(c.second)} scale ${num(c.size)}"
+        s"checker color ${rgbt(c.first)}, color ${rgbt(c.second)} scale ${num(c.size)} " +
+          moves.map(placement).mkString
     val finish = s"finish { ambient 0 diffuse ${num(f.diffuse)} reflection ${num(f.reflection)}" +
       s" phong ${num(f.phong)} phong_size ${num(f.phongSize)}" +
       s" specular ${num(f.specular)} roughness ${num(f.roughness)} }"

@@ -172,6 +172,12 @@ class PovRaySuite extends munit.FunSuite:
   test("-g srgb on a version 3 scene matches POV-Ray's File_Gamma=sRGB"):
     version3("csg", psnr = 58.37, off = 0.056, List("-g", "srgb"), "sRGB")
 
+  test("a camera inside two parts of a glass union sees what POV-Ray's does"):
+    version3("eye-in-union", psnr = 49.30, off = 0.042)
+
+  test("a checker on a placed union of a triangle and a mesh stays in the union's space"):
+    version3("union-checker", psnr = 83.35, off = 0)
+
   test("smooth=\"auto\" on a mesh without normals matches POV-Ray's smooth triangles"):
     version3("auto", psnr = 48.55, off = 0.299)
 
