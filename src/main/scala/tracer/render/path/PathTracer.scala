@@ -275,7 +275,12 @@ object PathTracer:
               tr *= out.wr
               tg *= out.wg
               tb *= out.wb
-              val side = if out.transmitted then -Shading.Epsilon else Shading.Epsilon
+              // The new ray starts off the face's own plane on the side it goes to, as Mitsuba's
+              // spawn_ray does: on a smooth mesh a bounce about the shading normal may go behind
+              // the face's plane, and passes it (on a flat face, the side a reflection stays on).
+              val side =
+                if nx * out.sx + ny * out.sy + nz * out.sz < 0 then -Shading.Epsilon
+                else Shading.Epsilon
               ox = px + nx * side
               oy = py + ny * side
               oz = pz + nz * side
@@ -329,7 +334,9 @@ object PathTracer:
       // The smooth lobes reflect on the path's side only: the light is sought from S0, just off
       // the face's own plane on that side (as Whitted's shadow rays, so that a point light gives
       // exactly Whitted's direct light), and the shadow ray stops short of a glowing shape's
-      // point so as not to meet that shape itself.
+      // point so as not to meet that shape itself. A light behind the face's plane (which a
+      // smooth mesh's shading normal may still see) is sought through the face: its shadow ray
+      // starts just off the plane on the far side, as Mitsuba's spawn_ray_to.
       val fx = px + nx * Shading.Epsilon
       val fy = py + ny * Shading.Epsilon
       val fz = pz + nz * Shading.Epsilon
@@ -352,7 +359,19 @@ object PathTracer:
           val reach   =
             if density == 0 || java.lang.Double.isInfinite(out.distance) then out.distance
             else out.distance - 2 * Shading.Epsilon
-          val share = visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
+          val share =
+            if nx * out.lx + ny * out.ly + nz * out.lz >= 0 then
+              visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
+            else
+              visibility.alongFrom(
+                px - nx * Shading.Epsilon,
+                py - ny * Shading.Epsilon,
+                pz - nz * Shading.Epsilon,
+                out.lx,
+                out.ly,
+                out.lz,
+                reach
+              )
           if share > 0 then
             val w =
               if density == 0 then share

@@ -47,6 +47,26 @@ class PathAnalyticSuite extends munit.FunSuite:
       // Far from the ball every pixel is the sky itself, exactly.
       assertEqualsDouble(raster(0, 0).g, sky, 1e-6)
 
+  // One open face over the whole picture, its corners' normals leaning 40° off its own: a third
+  // of the cosine lobe about the shading normal lies behind the face's plane, and the paths and
+  // shadow rays sent there pass the face (as Mitsuba's), so it shows kd·B like a furnace; with
+  // them stopped by the face itself it showed 0.88·kd·B.
+  for depth <- List(1, 3) do
+    test(s"a smooth face leaning off its plane shows kd·B under a uniform sky at -r $depth"):
+      val kd   = 0.6
+      val sky  = 1.3
+      val lean = Vec3(Math.sin(Math.toRadians(40)), 0, -Math.cos(Math.toRadians(40)))
+      val face = Triangle(
+        Vec3(-10, -10, 0),
+        Vec3(10, -10, 0),
+        Vec3(0, 10, 0),
+        cornerNormals = Some((lean, lean, lean))
+      )
+      val scene =
+        Scene(camera, Colour.grey(sky), Nil, List(SceneObject(face, Surface(diffuse = kd))))
+      val raster = render(scene, 16, 64, depth)
+      assertMean(values(raster), kd * sky)
+
   test("-r 0 shows only emission and the background: a lit diffuse ball is black"):
     val scene = Scene(
       camera,
