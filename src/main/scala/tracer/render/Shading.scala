@@ -108,8 +108,9 @@ final class Shading(world: World, mode: ShadingMode):
     val leaf  = query.leaf
     val face  = query.face
     val front = query.front
-    // Equations 40 and 43: shadow and reflected rays start just off the surface, on the side the
-    // ray came from (the geometric side, even where a smooth normal leans).
+    // Equation 40: shadow rays start just off the surface, on the side the ray came from (the
+    // geometric side, even where a smooth normal leans); reflected rays, from the same point
+    // unless they leave behind the face's plane (reflected).
     val s0x     = px + nx * Shading.Epsilon
     val s0y     = py + ny * Shading.Epsilon
     val s0z     = pz + nz * Shading.Epsilon
@@ -125,9 +126,9 @@ final class Shading(world: World, mode: ShadingMode):
     val litB = blue
     if depth <= 0 then set(Colour.Black)
     else if surface.transmit <= 0 then
-      mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
+      mirror(surface.reflection, sx, sy, sz, px, py, pz, nx, ny, nz, dx, dy, dz, depth, insides)
     else
-      transmitted(i, surface, px, py, pz, nx, ny, nz, sx, sy, sz, s0x, s0y, s0z)(
+      transmitted(i, surface, px, py, pz, nx, ny, nz, sx, sy, sz)(
         dx,
         dy,
         dz,
@@ -265,9 +266,12 @@ final class Shading(world: World, mode: ShadingMode):
       sx: Double,
       sy: Double,
       sz: Double,
-      s0x: Double,
-      s0y: Double,
-      s0z: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
       dx: Double,
       dy: Double,
       dz: Double,
@@ -276,12 +280,41 @@ final class Shading(world: World, mode: ShadingMode):
   ): Unit =
     if reflection <= 0 then set(Colour.Black)
     else
-      // Refraction.reflect: Rd − 2(rn · Rd)rn.
-      val k = 2 * (sx * dx + sy * dy + sz * dz)
-      traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+      reflected(sx, sy, sz, px, py, pz, nx, ny, nz, dx, dy, dz, depth, insides)
       red = red * reflection
       green = green * reflection
       blue = blue * reflection
+
+  /** colour(T, depth − 1) for the ray T reflected at the hit p (shading normal s, the face's own
+    * normal n, both facing the ray), left in red, green and blue: T_d = R_d − 2(s·R_d)s
+    * (Refraction.reflect), from S0 = p + ε·n (equation 43). On a smooth mesh T may leave behind
+    * the face's own plane; it then starts at p − ε·n and passes the face, as POV-Ray's reflected
+    * ray, which starts on the surface itself, does (a flat face's T never does).
+    */
+  private def reflected(
+      sx: Double,
+      sy: Double,
+      sz: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int,
+      insides: List[Int]
+  ): Unit =
+    val k    = 2 * (sx * dx + sy * dy + sz * dz)
+    val tx   = dx - sx * k
+    val ty   = dy - sy * k
+    val tz   = dz - sz * k
+    val side =
+      if (sx != nx || sy != ny || sz != nz) && nx * tx + ny * ty + nz * tz < 0 then -Shading.Epsilon
+      else Shading.Epsilon
+    traceFrom(px + nx * side, py + ny * side, pz + nz * side, tx, ty, tz, depth - 1, insides)
 
   /** transmit · colour(ray through the surface) + the mirror term, left in red, green and blue;
     * the ray goes straight on where the indices match (not counted against the depth, as POV-Ray
@@ -300,10 +333,7 @@ final class Shading(world: World, mode: ShadingMode):
       nz: Double,
       sx: Double,
       sy: Double,
-      sz: Double,
-      s0x: Double,
-      s0y: Double,
-      s0z: Double
+      sz: Double
   )(dx: Double, dy: Double, dz: Double, depth: Int, insides: List[Int]): Unit =
     Refraction.crossing(insides, i, world.surface(_).ior) { (eta, beyondInsides) =>
       // The ray through starts just behind the surface.
@@ -315,7 +345,7 @@ final class Shading(world: World, mode: ShadingMode):
         val tr = red * surface.transmit
         val tg = green * surface.transmit
         val tb = blue * surface.transmit
-        mirror(surface.reflection, sx, sy, sz, s0x, s0y, s0z, dx, dy, dz, depth, insides)
+        mirror(surface.reflection, sx, sy, sz, px, py, pz, nx, ny, nz, dx, dy, dz, depth, insides)
         red = tr + red
         green = tg + green
         blue = tb + blue
@@ -324,8 +354,7 @@ final class Shading(world: World, mode: ShadingMode):
         Refraction.refracted(dx, dy, dz, sx, sy, sz, eta)((ux, uy, uz) =>
           through(ux, uy, uz, depth - 1)
         ) {
-          val k = 2 * (sx * dx + sy * dy + sz * dz)
-          traceFrom(s0x, s0y, s0z, dx - sx * k, dy - sy * k, dz - sz * k, depth - 1, insides)
+          reflected(sx, sy, sz, px, py, pz, nx, ny, nz, dx, dy, dz, depth, insides)
         }
     }
 

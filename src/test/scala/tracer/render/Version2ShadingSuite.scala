@@ -128,6 +128,26 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     assertEquals(World(scene).containing(eye), List(0, 0))
     assertEquals(samples(render(scene)), List(0, 255, 0))
 
+  // A smooth face whose corners' normals lean 60° off its own: the camera's ray, mirrored about
+  // that normal, leaves behind the face's plane. POV-Ray's reflected ray starts on the surface and
+  // passes the face to the sky; one started on the camera's side would meet the face at once.
+  test("a smooth face's reflection that leaves behind its plane passes the face to the sky"):
+    val lean = Vec3(Math.sin(Math.toRadians(60)), 0, -Math.cos(Math.toRadians(60)))
+    val face = Triangle(
+      Vec3(-10, -10, 0),
+      Vec3(10, -10, 0),
+      Vec3(0, 10, 0),
+      cornerNormals = Some((lean, lean, lean))
+    )
+    val sky   = Colour(0.2, 0.4, 0.6)
+    val scene = Scene(
+      Camera(Vec3(0, 0, -3), Vec3.Zero),
+      sky,
+      Nil,
+      List(SceneObject(face, Surface(diffuse = 0, reflection = 1)))
+    )
+    assertEquals(samples(render(scene)), List(0.2, 0.4, 0.6).map(Colour.quantise(_, 255)))
+
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
     assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)
