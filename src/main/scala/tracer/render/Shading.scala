@@ -119,7 +119,10 @@ final class Shading(world: World, mode: ShadingMode):
     lit(i, face, surface, pigment(i, leaf, px, py, pz), sx, sy, sz, leaning, s0x, s0y, s0z)(
       px,
       py,
-      pz
+      pz,
+      nx,
+      ny,
+      nz
     )(dx, dy, dz, depth)
     val litR = red
     val litG = green
@@ -175,7 +178,12 @@ final class Shading(world: World, mode: ShadingMode):
       s0x: Double,
       s0y: Double,
       s0z: Double
-  )(px: Double, py: Double, pz: Double)(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
+  )(px: Double, py: Double, pz: Double, nx: Double, ny: Double, nz: Double)(
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int
+  ): Unit =
     val diffuse  = surface.diffuse * (1 - surface.transmit)
     val oneSided = leaning || surface.transmit > 0
     red = 0.0
@@ -187,7 +195,10 @@ final class Shading(world: World, mode: ShadingMode):
       light(k, i, face, surface, colour, diffuse, oneSided, sx, sy, sz, s0x, s0y, s0z)(
         px,
         py,
-        pz
+        pz,
+        if leaning then nx else Double.NaN,
+        ny,
+        nz
       )(dx, dy, dz, depth)
       k += 1
 
@@ -206,7 +217,12 @@ final class Shading(world: World, mode: ShadingMode):
       s0x: Double,
       s0y: Double,
       s0z: Double
-  )(px: Double, py: Double, pz: Double)(dx: Double, dy: Double, dz: Double, depth: Int): Unit =
+  )(px: Double, py: Double, pz: Double, nx: Double, ny: Double, nz: Double)(
+      dx: Double,
+      dy: Double,
+      dz: Double,
+      depth: Int
+  ): Unit =
     val light = world.lights(k)
     val tx    = light.location.x - s0x
     val ty    = light.location.y - s0y
@@ -226,6 +242,21 @@ final class Shading(world: World, mode: ShadingMode):
       // shadowed by the surface itself, so that is tested first (World.ownBlocks).
       val share =
         if light.area.isDefined then shadows.areaFrom(s0x, s0y, s0z, k)
+        else if nx * sdx + ny * sdy + nz * sdz < 0 then
+          // A smooth face's point light that its leaning normal faces from behind the face's own
+          // plane (nx is NaN for a flat face): the shadow ray starts on the far side and passes
+          // the face, as POV-Ray's, which starts on the surface itself.
+          shadows.pointToward(
+            k,
+            depth,
+            px - nx * Shading.Epsilon,
+            py - ny * Shading.Epsilon,
+            pz - nz * Shading.Epsilon,
+            sdx,
+            sdy,
+            sdz,
+            reach
+          )
         else if cos < 0 && world.ownBlocks(i, face, s0x, s0y, s0z, sdx, sdy, sdz, reach, query)
         then 0.0
         else shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)

@@ -148,6 +148,27 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     )
     assertEquals(samples(render(scene)), List(0.2, 0.4, 0.6).map(Colour.quantise(_, 255)))
 
+  // The same leaning face lit by a point light behind its own plane that the leaning normal
+  // faces: POV-Ray's shadow ray starts on the surface and passes the face, so the light counts;
+  // one started on the camera's side would be blocked by the face itself.
+  test("a smooth face is lit by a light behind its plane that its leaning normal faces"):
+    val lean = Vec3(Math.sin(Math.toRadians(60)), 0, -Math.cos(Math.toRadians(60)))
+    val face = Triangle(
+      Vec3(-10, -10, 0),
+      Vec3(10, -10, 0),
+      Vec3(0, 10, 0),
+      cornerNormals = Some((lean, lean, lean))
+    )
+    val lamp  = Vec3(10, 0, 2)
+    val scene = Scene(
+      Camera(Vec3(0, 0, -3), Vec3.Zero),
+      Colour.Black,
+      List(Light(lamp)),
+      List(SceneObject(face, Surface(diffuse = 1)))
+    )
+    val s0 = Vec3(0, 0, -Shading.Epsilon)
+    assertEquals(samples(render(scene)), grey(lean.dot((lamp - s0).normalisedOr(Vec3.UnitX))))
+
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
     assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)
