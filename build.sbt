@@ -69,8 +69,8 @@ lazy val root = project
     Test / testOptions += Tests.Argument(TestFrameworks.MUnit, "-b"),
     // The system tests run the real launcher, which needs the assembled jar, and the release.
     Test / test               := (Test / test).dependsOn(assembly, dist).value,
-    console / initialCommands := "import tracer.math.*, tracer.image.*, tracer.io.*, " +
-      "tracer.geometry.*, tracer.scene.*, tracer.render.*",
+    console / initialCommands := "import java.nio.file.Path, tracer.math.*, tracer.image.*, " +
+      "tracer.io.*, tracer.geometry.*, tracer.scene.*, tracer.render.*",
     Compile / console / scalacOptions ~= (_.filterNot(Set("-Werror", "-Wunused:all")))
   )
 
@@ -198,10 +198,11 @@ lazy val launcher = project
         tree(base / "scenes", "scenes", path => !path.startsWith("bench/")) // generated
     },
     maintainer         := "The tracer authors <tracer@localhost>",
-    packageSummary     := "a Whitted ray tracer: renders XML scenes to PNG or PPM",
+    packageSummary     := "a ray tracer: renders XML scenes to PNG, PPM, PFM or OpenEXR",
     packageDescription := "tracer renders scenes written in a small XML format " +
-      "(spheres, planes, triangles, OBJ meshes, textures, reflection, refraction, area lights) " +
-      "to PNG or PPM pictures, one frame or a batch of frames in one process.",
+      "(spheres, planes, triangles, OBJ meshes, solids and CSG, textures, reflection, " +
+      "refraction, point and area lights, glowing surfaces) by Whitted's rays or by path " +
+      "tracing, to PNG, PPM, PFM or OpenEXR pictures, one frame or a batch of frames in one process.",
     Debian / packageArchitecture       := "all",
     Debian / debianPackageDependencies := Seq(
       "default-jre-headless (>= 2:1.17) | java17-runtime-headless | java-runtime-headless (>= 17)"

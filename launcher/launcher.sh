@@ -382,6 +382,13 @@ tracer_launch() {
   # exit first loads the JDK's logging for one debug message, 15-20 ms of every run. Options of the
   # user's may start a flight recording or an agent whose shutdown hooks must run: no halt then.
   if [ -z "${TRACER_JAVA_OPTS+set}" ]; then tracer_jvm+=(-Dtracer.exit=halt); fi
+  case "${TRACER_CACHE:-auto}" in
+    auto | off | cds) ;;
+    *)
+      echo "tracer: TRACER_CACHE='$TRACER_CACHE' must be off or cds (or unset)" >&2
+      exit 2
+      ;;
+  esac
   case "${TRACER_LANES:-off}" in
     off) ;;
     # The walks test four boxes at once with the Vector API (docs/performance.md, round 15); its

@@ -1,6 +1,6 @@
 package tracer
 
-import java.nio.file.Files
+import java.nio.file.{Files, Path}
 import tracer.geometry.*
 import tracer.image.*
 import tracer.io.*
@@ -8,7 +8,9 @@ import tracer.math.*
 import tracer.render.*
 import tracer.scene.*
 
-/** The README's REPL example, line for line: build a scene in code, render it, save it. */
+/** The README's REPL example, line for line: build a scene in code, render it, save it. The
+  * imports are the console's (`console / initialCommands` in build.sbt), `Path` among them.
+  */
 class ReplExampleSuite extends munit.FunSuite:
 
   test("the README's REPL example renders and saves a picture"):
@@ -41,8 +43,9 @@ class ReplExampleSuite extends munit.FunSuite:
     Files.delete(dir.resolve("repl.png")); Files.delete(dir)
 
   test("a scene file loads in the REPL with SceneXml.load"):
-    val loaded =
-      SceneXml.load(java.nio.file.Path.of("scenes/showcase.xml"), java.nio.file.Path.of("scenes"))
+    // --- as in README.md ---
+    val loaded = SceneXml.load(Path.of("scenes/showcase.xml"), Path.of("scenes"))
+    // --- end ---
     assert(loaded.exists(_.objects.nonEmpty), loaded.toString)
 
   test("the guide's CSG example renders as the same scene written in XML"):

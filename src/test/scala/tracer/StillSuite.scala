@@ -196,7 +196,7 @@ class StillSuite extends MovieWorkspace:
     val bad =
       run(List(still.toString, tracer, d.resolve("bad.xml").toString, d.resolve("x.png").toString))
     assertEquals(bad.status, 1)
-    assert(bad.err.contains("tracer: scene") && bad.err.contains("still.sh:"), bad.err)
+    assert(bad.err.contains("line 1: malformed XML") && bad.err.contains("still.sh:"), bad.err)
 
   workspace.test("FARM_JOBS without GNU parallel is a clear message before anything is rendered"):
     d =>

@@ -11,7 +11,8 @@ import tracer.scene.Scene
 private[cli] object Inputs:
 
   /** The scene, from `-i FILE` or standard input, with its textures and meshes (those of `reuse`
-    * while their files are unchanged, in a batch); warnings to `err`.
+    * while their files are unchanged, in a batch); warnings to `err`. A scene error names FILE
+    * (`scene` for standard input) before its line.
     */
   def scene(
       options: Options,
@@ -28,7 +29,7 @@ private[cli] object Inputs:
       SceneXml
         .parse(bytes, sources)
         .left
-        .map(e => s"scene: ${e.describe}")
+        .map(e => s"${options.input.getOrElse("scene")}: ${e.describe}")
     }
 
   /** The bytes of `file`, or why it cannot be read, naming it as `what`. */
@@ -48,7 +49,10 @@ private[cli] object Inputs:
   ): Either[String, (Array[Byte], Path)] =
     input match
       case None =>
-        try Right((in.readAllBytes(), cwd))
+        try
+          val bytes = in.readAllBytes()
+          if bytes.isEmpty then Left("no scene on standard input (pipe one in, or give -i FILE)")
+          else Right((bytes, cwd))
         catch
           case e: IOException =>
             Left(s"cannot read the scene from standard input: ${IoFailure.reason(e)}")

@@ -1,7 +1,7 @@
 package tracer.cli
 
 import java.io.{FileDescriptor, FileInputStream, InputStream, PrintStream}
-import java.nio.file.Path
+import java.nio.file.{Files, Path}
 import scala.util.control.NonFatal
 import tracer.image.{Bitmap, ImageFile, ImageFormat, PngStream}
 import tracer.io.{Images, OutputFile, SceneSources}
@@ -105,6 +105,7 @@ object Main:
     val format                   = ImageFile.formatFor(output.getFileName.toString)
     for
       _     <- floatWithoutEncoding(options, format)
+      _     <- notTheScene(options, output, cwd)
       _     <- OutputFile.checkWritable(output).left.map(failure)
       scene <- Inputs.scene(options, in, err, cwd, reuse).left.map(failure)
       config = cameraConfig(scene, options)
@@ -158,6 +159,21 @@ object Main:
       case ImageFormat.Ppm =>
         val bitmap = Renderer.render(scene, config, threads, onRow, band)
         Drawn(Images.save(bitmap, _, threads))
+
+  /** Refuses an output file that is the `-i` scene file itself, which the picture would replace. */
+  private def notTheScene(options: Options, output: Path, cwd: Path): Either[Problem, Unit] =
+    def same(scene: Path) =
+      try Files.exists(output) && Files.isSameFile(scene, output)
+      catch case _: java.io.IOException => false // an unreadable pair: the reads will say why
+    options.input.filter(_.nonEmpty).map(cwd.resolve) match
+      case Some(scene) if same(scene) =>
+        Left(
+          Problem(
+            UsageError,
+            s"the output ${options.output} is the scene file itself: give the picture another name"
+          )
+        )
+      case _ => Right(())
 
   /** Refuses `-g` (any value, even 1) with a floating-point output: `.pfm` and `.exr` hold the
     * linear values, which no encoding touches.
@@ -214,7 +230,11 @@ object Main:
             if options.timing then out.println(s"Tracetime: $millis ms ${frame.output}")
             false
           case Left(problem) =>
-            err.println(s"tracer: ${frame.scene}: ${problem.message}")
+            // The frame's scene named once: a scene error names it already.
+            val named =
+              if problem.message.startsWith(s"${frame.scene}: ") then problem.message
+              else s"${frame.scene}: ${problem.message}"
+            err.println(s"tracer: $named")
             true
       }
       if failed == 0 then Success else Failure

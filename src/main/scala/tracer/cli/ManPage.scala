@@ -24,7 +24,7 @@ object ManPage:
     (List(
       s""".TH TRACER 1 "" "tracer ${text(version)}" "User Commands"""",
       ".SH NAME",
-      "tracer \\- a ray tracer: renders an XML scene to a PNG or PPM picture",
+      "tracer \\- a ray tracer: renders an XML scene to a PNG, PPM, PFM or OpenEXR picture",
       ".SH SYNOPSIS",
       ".B tracer",
       "[\\fIoptions\\fR] \\fIOUTPUT\\fR < \\fIscene.xml\\fR",

@@ -19,17 +19,37 @@ final case class SceneSources(
 object SceneSources:
   /** Files relative to `base`, warnings to `warn`. */
   def files(base: Path, warn: String => Unit = _ => ()): SceneSources =
-    SceneSources(TextureFiles.loader(base), MeshFiles.loader(base), warn)
+    SceneSources(
+      located(base, TextureFiles.loader(base)),
+      located(base, MeshFiles.loader(base)),
+      warn
+    )
 
   /** [[files]], each texture and mesh taken from `reuse` while its file is unchanged (a batch's
     * frames share them).
     */
   def reusing(base: Path, reuse: Reuse, warn: String => Unit): SceneSources =
     SceneSources(
-      name => reuse.textures(base.resolve(name))(TextureFiles.readTexels),
-      name => reuse.meshes(base.resolve(name))(ObjReader.read(_, name)),
+      located(base, name => reuse.textures(base.resolve(name))(TextureFiles.readTexels)),
+      located(base, name => reuse.meshes(base.resolve(name))(ObjReader.read(_, name))),
       warn
     )
+
+  /** `load`, whose failure for a relative name of a file that is not there also says where it
+    * was looked for: relative names resolve against the scene file's directory, which a user may
+    * not expect.
+    */
+  private def located[A](
+      base: Path,
+      load: String => Either[String, A]
+  ): String => Either[String, A] =
+    name =>
+      load(name).left.map { why =>
+        val where =
+          try Some(Path.of(name)).filter(!_.isAbsolute).map(base.resolve(_).normalize)
+          catch case _: java.nio.file.InvalidPathException => None
+        where.filter(java.nio.file.Files.notExists(_)).fold(why)(w => s"$why (looked for $w)")
+      }
 
   /** What the frames of one batch share: their decoded textures and read meshes. */
   final class Reuse:

@@ -187,7 +187,7 @@ class MainOptionsSuite extends munit.FunSuite with Images with InProcess:
     val r = run(d, "-x", "16", "-t", "--batch", "list.txt")()
     assertEquals(r.status, 1)
     assert(
-      r.err.linesIterator.toList.length == 1 && r.err.startsWith("tracer: bad.xml: scene"),
+      r.err.linesIterator.toList.length == 1 && r.err.startsWith("tracer: bad.xml: line 2: "),
       r.err
     )
     assertEquals(

@@ -143,7 +143,6 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
 
   dir.test("malformed XML and a DOCTYPE are failures with status 1"): d =>
     assertFailed(run(d, "<scene>", "o.png"), 1, "malformed XML")
-    assertFailed(run(d, "", "o.png"), 1, "malformed XML")
     assertFailed(
       run(d, "<!DOCTYPE scene [<!ENTITY a \"b\">]><scene>&a;</scene>", "o.png"),
       1,
@@ -151,10 +150,27 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
     )
     assertNoFilesBut(d)
 
+  dir.test("an output that is the -i scene file itself is refused, the scene kept"): d =>
+    Files.writeString(d.resolve("mine.xml"), simple)
+    assertFailed(run(d, "", "-i", "mine.xml", "mine.xml"), 2, "mine.xml", "scene file itself")
+    assertFailed(run(d, "", "-i", "mine.xml", "./mine.xml"), 2, "scene file itself")
+    assertEquals(Files.readString(d.resolve("mine.xml")), simple)
+
+  dir.test("a scene error names the -i file, or `scene` for standard input"): d =>
+    Files.writeString(d.resolve("bad.xml"), "<scene><camera/></scene>")
+    assertFailed(run(d, "", "-i", "bad.xml", "o.png"), 1, "tracer: bad.xml: line 1: <camera>")
+    assertFailed(run(d, "<scene><camera/></scene>", "o.png"), 1, "tracer: scene: line 1: <camera>")
+
+  dir.test("nothing on standard input is one clear line"): d =>
+    assertFailed(run(d, "", "o.png"), 1, "no scene on standard input")
+    assertNoFilesBut(d)
+
   dir.test("a missing or unreadable texture exits 1 naming the file"): d =>
     val textured =
       simple.replace("<colour r=\"1\" g=\"0.5\" b=\"0\"/>", "<texture file=\"maps/earth.ppm\"/>")
     assertFailed(run(d, textured, "o.png"), 1, "maps/earth.ppm", "no such file")
+    // A relative name that is not there: where it was looked for, from the scene's directory.
+    assertFailed(run(d, textured, "o.png"), 1, s"looked for ${d.resolve("maps/earth.ppm")}")
     Files.createDirectory(d.resolve("maps"))
     Files.writeString(d.resolve("maps/earth.ppm"), "P3 2 2 255 1 2 3")
     assertFailed(run(d, textured, "o.png"), 1, "maps/earth.ppm", "truncated")
