@@ -192,11 +192,11 @@ final class Shading(world: World, mode: ShadingMode):
     // Perf: a counted loop over the lights (see above).
     var k = 0
     while k < world.lights.length do
-      light(k, i, face, surface, colour, diffuse, oneSided, sx, sy, sz, s0x, s0y, s0z)(
+      light(k, i, face, surface, colour, diffuse, oneSided, leaning, sx, sy, sz, s0x, s0y, s0z)(
         px,
         py,
         pz,
-        if leaning then nx else Double.NaN,
+        nx,
         ny,
         nz
       )(dx, dy, dz, depth)
@@ -211,6 +211,7 @@ final class Shading(world: World, mode: ShadingMode):
       colour: Colour,
       diffuse: Double,
       oneSided: Boolean,
+      leaning: Boolean,
       sx: Double,
       sy: Double,
       sz: Double,
@@ -242,10 +243,10 @@ final class Shading(world: World, mode: ShadingMode):
       // shadowed by the surface itself, so that is tested first (World.ownBlocks).
       val share =
         if light.area.isDefined then shadows.areaFrom(s0x, s0y, s0z, k)
-        else if nx * sdx + ny * sdy + nz * sdz < 0 then
+        else if leaning && nx * sdx + ny * sdy + nz * sdz < 0 then
           // A smooth face's point light that its leaning normal faces from behind the face's own
-          // plane (nx is NaN for a flat face): the shadow ray starts on the far side and passes
-          // the face, as POV-Ray's, which starts on the surface itself.
+          // plane: the shadow ray starts on the far side and passes the face, as POV-Ray's, which
+          // starts on the surface itself.
           shadows.pointToward(
             k,
             depth,
