@@ -128,17 +128,22 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     assertEquals(World(scene).containing(eye), List(0, 0))
     assertEquals(samples(render(scene)), List(0, 255, 0))
 
-  // A smooth face whose corners' normals lean 60° off its own: the camera's ray, mirrored about
-  // that normal, leaves behind the face's plane. POV-Ray's reflected ray starts on the surface and
-  // passes the face to the sky; one started on the camera's side would meet the face at once.
-  test("a smooth face's reflection that leaves behind its plane passes the face to the sky"):
-    val lean = Vec3(Math.sin(Math.toRadians(60)), 0, -Math.cos(Math.toRadians(60)))
-    val face = Triangle(
+  // One face in the plane z = 0 over the whole picture, seen from −z, whose corners' normals all
+  // lean 60° off its own towards +x.
+  private val lean        = Vec3(Math.sin(Math.toRadians(60)), 0, -Math.cos(Math.toRadians(60)))
+  private val leaningFace =
+    Triangle(
       Vec3(-10, -10, 0),
       Vec3(10, -10, 0),
       Vec3(0, 10, 0),
       cornerNormals = Some((lean, lean, lean))
     )
+
+  // A smooth face whose corners' normals lean 60° off its own: the camera's ray, mirrored about
+  // that normal, leaves behind the face's plane. POV-Ray's reflected ray starts on the surface and
+  // passes the face to the sky; one started on the camera's side would meet the face at once.
+  test("a smooth face's reflection that leaves behind its plane passes the face to the sky"):
+    val face  = leaningFace
     val sky   = Colour(0.2, 0.4, 0.6)
     val scene = Scene(
       Camera(Vec3(0, 0, -3), Vec3.Zero),
@@ -152,13 +157,7 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
   // faces: POV-Ray's shadow ray starts on the surface and passes the face, so the light counts;
   // one started on the camera's side would be blocked by the face itself.
   test("a smooth face is lit by a light behind its plane that its leaning normal faces"):
-    val lean = Vec3(Math.sin(Math.toRadians(60)), 0, -Math.cos(Math.toRadians(60)))
-    val face = Triangle(
-      Vec3(-10, -10, 0),
-      Vec3(10, -10, 0),
-      Vec3(0, 10, 0),
-      cornerNormals = Some((lean, lean, lean))
-    )
+    val face  = leaningFace
     val lamp  = Vec3(10, 0, 2)
     val scene = Scene(
       Camera(Vec3(0, 0, -3), Vec3.Zero),
