@@ -242,7 +242,9 @@ final class Shading(world: World, mode: ShadingMode):
       // A point light behind the surface (cos < 0: S0 lies on the other side) is mostly
       // shadowed by the surface itself, so that is tested first (World.ownBlocks).
       val share =
-        if light.area.isDefined then shadows.areaFrom(s0x, s0y, s0z, k)
+        if light.area.isDefined then
+          if leaning then shadows.areaBeside(s0x, s0y, s0z, px, py, pz, nx, ny, nz, k)
+          else shadows.areaFrom(s0x, s0y, s0z, k)
         else if leaning && nx * sdx + ny * sdy + nz * sdz < 0 then
           // A smooth face's point light that its leaning normal faces from behind the face's own
           // plane: the shadow ray starts on the far side and passes the face, as POV-Ray's, which

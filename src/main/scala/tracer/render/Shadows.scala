@@ -87,13 +87,52 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
 
   /** [[area]] from the point (fx, fy, fz). */
   def areaFrom(fx: Double, fy: Double, fz: Double, k: Int): Double =
+    areaBeside(fx, fy, fz, fx, fy, fz, 0, 0, 0, k)
+
+  /** [[areaFrom]] S0 = (fx, fy, fz) just off a smooth mesh's face at p, whose own unit normal n
+    * faces the ray: a sub-light behind the face's plane (n · (sub-light − S0) < 0), which the
+    * leaning normal may still face, is sought from p − ε·n on the far side, so that its shadow
+    * ray passes the face, as POV-Ray's from the surface itself does. With n = 0 every sub-light is
+    * sought from S0 ([[areaFrom]]).
+    */
+  def areaBeside(
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      k: Int
+  ): Double =
     val light = world.lights(k)
     light.area match
       case Some(area) =>
         java.util.Arrays.fill(grid, 0, area.samplesA * area.samplesB, -1.0)
         val positions = world.subLights(k)
-        if beam.length > 0 then aim(fx, fy, fz, positions, area)
-        val share = cell(fx, fy, fz, positions, area, 0, 0, area.samplesA - 1, area.samplesB - 1)
+        val flat      = nx == 0 && ny == 0 && nz == 0
+        // A beam holds the rays from S0 alone: a smooth face's rays walk the tree.
+        if beam.length > 0 && flat then aim(fx, fy, fz, positions, area)
+        val share =
+          cell(
+            fx,
+            fy,
+            fz,
+            px,
+            py,
+            pz,
+            nx,
+            ny,
+            nz,
+            positions,
+            area,
+            0,
+            0,
+            area.samplesA - 1,
+            area.samplesB - 1
+          )
         inBeam = -1
         share
       case None =>
@@ -107,6 +146,12 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       fx: Double,
       fy: Double,
       fz: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
       positions: IArray[Double],
       light: AreaLight,
       u1: Int,
@@ -119,20 +164,29 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       val highU = (u1 + u2 + 1) / 2
       val lowV  = (v1 + v2) / 2
       val highV = (v1 + v2 + 1) / 2
-      (cell(fx, fy, fz, positions, light, u1, v1, lowU, lowV) +
-        cell(fx, fy, fz, positions, light, highU, v1, u2, lowV) +
-        cell(fx, fy, fz, positions, light, u1, highV, lowU, v2) +
-        cell(fx, fy, fz, positions, light, highU, highV, u2, v2)) * 0.25
+      (cell(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u1, v1, lowU, lowV) +
+        cell(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, highU, v1, u2, lowV) +
+        cell(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u1, highV, lowU, v2) +
+        cell(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, highU, highV, u2, v2)) * 0.25
     else
-      (sample(fx, fy, fz, positions, light, u1, v1) + sample(fx, fy, fz, positions, light, u2, v1) +
-        sample(fx, fy, fz, positions, light, u1, v2) +
-        sample(fx, fy, fz, positions, light, u2, v2)) * 0.25
+      (sample(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u1, v1) +
+        sample(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u2, v1) +
+        sample(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u1, v2) +
+        sample(fx, fy, fz, px, py, pz, nx, ny, nz, positions, light, u2, v2)) * 0.25
 
-  /** The share of sub-light (u, v) that reaches `from`, computed once per shading point. */
+  /** The share of sub-light (u, v) that reaches S0 = (fx, fy, fz), computed once per shading
+    * point; sought from p − ε·n when it lies behind the plane of normal n ([[areaBeside]]).
+    */
   private def sample(
       fx: Double,
       fy: Double,
       fz: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
       positions: IArray[Double],
       light: AreaLight,
       u: Int,
@@ -146,8 +200,19 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       val tz    = positions(3 * k + 2) - fz
       val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
       grid(k) =
-        if reach > 0 then pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
-        else 1.0
+        if !(reach > 0) then 1.0
+        else if nx * tx + ny * ty + nz * tz < 0 then
+          val e = Shading.Epsilon
+          pointAlong(
+            px - nx * e,
+            py - ny * e,
+            pz - nz * e,
+            tx / reach,
+            ty / reach,
+            tz / reach,
+            reach
+          )
+        else pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
     grid(k)
 
   /** [[pointAlong]] toward the world's light `k`, a point light, from a point shaded `depth`

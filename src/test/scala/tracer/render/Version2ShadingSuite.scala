@@ -168,6 +168,25 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     val s0 = Vec3(0, 0, -Shading.Epsilon)
     assertEquals(samples(render(scene)), grey(lean.dot((lamp - s0).normalisedOr(Vec3.UnitX))))
 
+  // As above with a small area light there: each of its sub-lights is sought through the face,
+  // so every one reaches the point, as from a point light at its centre (POV-Ray's sub-lights'
+  // shadow rays start on the surface too).
+  test("a smooth face is lit by an area light behind its plane as by a point light there"):
+    val lamp              = Vec3(10, 0, 2)
+    def lit(light: Light) = samples(
+      render(
+        Scene(
+          Camera(Vec3(0, 0, -3), Vec3.Zero),
+          Colour.Black,
+          List(light),
+          List(SceneObject(leaningFace, Surface(diffuse = 1)))
+        )
+      )
+    )
+    val small = AreaLight(Vec3(0, 0.01, 0), Vec3(0, 0, 0.01), 2, 2)
+    assertEquals(lit(Light(lamp, area = Some(small))), lit(Light(lamp)))
+    assert(lit(Light(lamp)).head > 0)
+
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
     assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)
