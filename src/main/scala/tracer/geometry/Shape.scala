@@ -494,6 +494,9 @@ final case class Placed(shape: Shape, placement: Placement) extends Shape:
   /** M⁻¹ (row-major) and t of the placement, for the kernel's ray transform on plain doubles. */
   private[geometry] val back: Array[Double] = Array.from(transform.backEntries)
 
+  /** True when some leaf is a smooth triangle or a mesh with a smooth face. */
+  val smooth: Boolean = Shape.hasSmoothLeaf(shape)
+
 /** How a [[Csg]] combines its children. */
 enum CsgOperation:
   /** Every child: all their surfaces, inner ones included (POV-Ray's `union`, not `merge`). */
@@ -520,6 +523,9 @@ final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends S
 
   /** The number of the first leaf of each child. */
   val firstLeaves: Vector[Int] = leafCounts.scanLeft(0)(_ + _).init
+
+  /** True when some leaf is a smooth triangle or a mesh with a smooth face. */
+  val smooth: Boolean = children.exists(Shape.hasSmoothLeaf)
 
   /** The children and their first leaves as arrays, for the kernel's loops. */
   private[geometry] val parts: Array[Shape]    = children.toArray
@@ -713,7 +719,43 @@ object Shape:
     case m: Mesh =>
       // A mesh's hit names its face as its leaf.
       if m.smoothFace(hit.leaf) then shadingNormal(m.face(hit.leaf), hit, ray) else hit.normal
-    case _: (Sphere | Plane | Box | Cone | Torus | Placed | Csg) => hit.normal
+    case _: (Placed | Csg) =>
+      // A smooth leaf of a combination or a placed shape: its own blend, carried into the world.
+      smoothLeafNormal(shape, hit.leaf, hit.point).fold(hit.normal)(blended =>
+        facing(blended.normalisedOr(hit.normal), ray)
+      )
+    case _: (Sphere | Plane | Box | Cone | Torus) => hit.normal
+
+  /** True when some leaf of `shape` is a smooth triangle or a mesh with a smooth face. */
+  def hasSmoothLeaf(shape: Shape): Boolean = shape match
+    case tr: Triangle                             => tr.cornerNormals.isDefined
+    case m: Mesh                                  => m.cornerNormals.exists(_ >= 0)
+    case p: Placed                                => p.smooth
+    case c: Csg                                   => c.smooth
+    case _: (Sphere | Plane | Box | Cone | Torus) => false
+
+  /** The corners' normals of leaf `leaf` of `shape` blended at `point` (equations 33–34) and
+    * carried into the world by the placements above it, not normalised, when that leaf is a
+    * smooth triangle or a mesh's smooth face; None for any other leaf (scene-format.md, "Which
+    * normal": the child's own).
+    */
+  def smoothLeafNormal(shape: Shape, leaf: Int, point: Vec3): Option[Vec3] = shape match
+    case tr: Triangle =>
+      tr.cornerNormals.map { (n0, n1, n2) =>
+        val (u, v) = triangleCoordinates(tr, point - tr.t0)
+        n0 * (1 - u - v) + n1 * u + n2 * v
+      }
+    case m: Mesh =>
+      if m.smoothFace(leaf) then smoothLeafNormal(m.face(leaf), 0, point) else None
+    case p: Placed =>
+      if !p.smooth then None
+      else smoothLeafNormal(p.shape, leaf, p.transform.pointBack(point)).map(p.transform.normal)
+    case c: Csg =>
+      if !c.smooth then None
+      else
+        val i = c.firstLeaves.lastIndexWhere(_ <= leaf)
+        smoothLeafNormal(c.children(i), leaf - c.firstLeaves(i), point)
+    case _: (Sphere | Plane | Box | Cone | Torus) => None
 
   /** The texture coordinates of `point` on `shape` (rendering.md, Textures); `leaf` says which
     * primitive of a combination the point is on.

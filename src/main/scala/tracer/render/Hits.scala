@@ -109,10 +109,23 @@ private[render] object Hits:
             FirstCrossing.nz(buffer),
             FirstCrossing.leaf(buffer)
           )(dx, dy, dz, query)
-          flat(query)
+          if Shape.hasSmoothLeaf(other) then smoothLeaf(other, dx, dy, dz, query)
+          else flat(query)
         else
           // Why: as in Shape.hitAt, a t from the distance always has a crossing; none is a bug.
           throw IllegalArgumentException(s"Hits.record: no crossing of $other (t = $t)")
+
+  /** Shape.shadingNormal on a combination or placed shape that holds a smooth leaf: that leaf's
+    * blend ([[Shape.smoothLeafNormal]]) normalised (else the geometric normal), facing the ray;
+    * the geometric normal on a flat leaf.
+    */
+  private def smoothLeaf(shape: Shape, dx: Double, dy: Double, dz: Double, query: Query): Unit =
+    val geometric = tracer.math.Vec3(query.nx, query.ny, query.nz)
+    Shape.smoothLeafNormal(shape, query.leaf, tracer.math.Vec3(query.px, query.py, query.pz)) match
+      case Some(blended) =>
+        val n = blended.normalisedOr(geometric)
+        orient(n.x, n.y, n.z, dx, dy, dz, query)
+      case None => flat(query)
 
   /** Shape.facingHit: the point, and the outward normal (ux, uy, uz) facing the ray. */
   private inline def facing(

@@ -53,7 +53,14 @@ class HitsProperties extends ScalaCheckSuite:
     2 -> (for
       op   <- Gen.oneOf(CsgOperation.values.toIndexedSeq)
       kids <- Gen.listOfN(2, solid)
-    yield Csg(op, kids.toVector))
+    yield Csg(op, kids.toVector)),
+    // A union holding (smooth) triangles, placed or not: its leaves' own shading normals.
+    2 -> (for
+      kids <- Gen.listOfN(2, Gen.oneOf(triangle, solid))
+      s    <- size
+      t    <- point
+      turn <- Gen.oneOf(Vec3.Zero, t * 20)
+    yield Placed(Csg(CsgOperation.Union, kids.toVector), Placement(s, turn, t)))
   )
 
   // Rays from anywhere around, or from inside, aimed at points near the shapes.

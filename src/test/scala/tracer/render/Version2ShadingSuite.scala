@@ -168,6 +168,29 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     val s0 = Vec3(0, 0, -Shading.Epsilon)
     assertEquals(samples(render(scene)), grey(lean.dot((lamp - s0).normalisedOr(Vec3.UnitX))))
 
+  // The leaning face as a leaf of a placed union (read whole: one with ior): it shades with its
+  // own corners' normals, turned by the placement, not the face's, so its reflection passes it
+  // as the face's alone does.
+  test("a smooth face inside a placed union shades with its own leaning normal"):
+    val far    = Sphere(Vec3(0, 0, -50), 1)
+    val united = Placed(
+      Csg(CsgOperation.Union, Vector(leaningFace, far)),
+      Placement(translate = Vec3(0, 0, 0.5))
+    )
+    val sky                = Colour(0.2, 0.4, 0.6)
+    def seen(shape: Shape) = samples(
+      render(
+        Scene(
+          Camera(Vec3(0, 0, -3), Vec3.Zero),
+          sky,
+          Nil,
+          List(SceneObject(shape, Surface(diffuse = 0, reflection = 1)))
+        )
+      )
+    )
+    assertEquals(seen(united), List(0.2, 0.4, 0.6).map(Colour.quantise(_, 255)))
+    assertEquals(seen(united), seen(leaningFace))
+
   // As above with a small area light there: each of its sub-lights is sought through the face,
   // so every one reaches the point, as from a point light at its centre (POV-Ray's sub-lights'
   // shadow rays start on the surface too).

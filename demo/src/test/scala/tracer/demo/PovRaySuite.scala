@@ -181,6 +181,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a mirroring smooth mesh reflects past its faces' planes where POV-Ray's does"):
     version3("smooth-mirror", psnr = 48.43, off = 0.139)
 
+  test("a smooth mesh inside a union that stays whole shades with its own normals"):
+    version3("union-smooth", psnr = 65.88, off = 0.014)
+
   test("smooth=\"auto\" on a mesh without normals matches POV-Ray's smooth triangles"):
     version3("auto", psnr = 48.55, off = 0.299)
 
