@@ -99,7 +99,11 @@ object PovRay:
       case tr: Triangle =>
         tr.cornerNormals match
           case Some((n0, n1, n2)) =>
-            s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}$leafRest"
+            val face =
+              s"smooth_triangle { ${vec(tr.t0)}, ${vec(n0)}, ${vec(tr.t1)}, ${vec(n1)}, ${vec(tr.t2)}, ${vec(n2)}"
+            // POV-Ray drops a lone smooth_triangle whose corner normals are not all on one side
+            // of its face (SmoothTriangle::Compute_Smooth_Triangle); a mesh keeps it.
+            if oneSided(tr, n0, n1, n2) then face + leafRest else s"mesh { $face }$leafRest"
           case None => s"triangle { ${vec(tr.t0)}, ${vec(tr.t1)}, ${vec(tr.t2)}$leafRest"
       case b: Box  => s"box { ${vec(b.corner1)}, ${vec(b.corner2)}$leafRest"
       case c: Cone =>
@@ -127,6 +131,13 @@ object PovRay:
           shape(c.children(i), o, leaf + c.firstLeaves(i), Nil, chain ++ enclosing, Left(passed))
         }
         s"$name { ${children.mkString(" ")}${rest(own)}"
+
+  /** True when the corner normals all lie on one side of the face (each dot with its normal of
+    * the same strict sign), as a lone POV-Ray `smooth_triangle` needs to be drawn at all.
+    */
+  private def oneSided(tr: Triangle, n0: Vec3, n1: Vec3, n2: Vec3): Boolean =
+    val dots = List(n0, n1, n2).map(_.dot(tr.normal))
+    dots.forall(_ > 0) || dots.forall(_ < 0)
 
   private def placement(p: Placement): String =
     s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "

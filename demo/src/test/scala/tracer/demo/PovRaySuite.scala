@@ -147,6 +147,10 @@ class PovRaySuite extends munit.FunSuite:
         .filterNot(_.startsWith("vn "))
         .map(l => if l.startsWith("f ") then l.replaceAll("/(\\d*)/\\d+", "/$1") else l)
       Files.writeString(dir.resolve("bare.obj"), bare.mkString("", "\n", "\n"))
+      // A model of the scene's own, when it has one.
+      Option(getClass.getResourceAsStream(s"/povray/$name.obj")).foreach(obj =>
+        Files.write(dir.resolve(s"$name.obj"), obj.readAllBytes)
+      )
       closeTo(dir, options, gamma, psnr, off)
     }
 
@@ -183,6 +187,9 @@ class PovRaySuite extends munit.FunSuite:
 
   test("a smooth mesh inside a union that stays whole shades with its own normals"):
     version3("union-smooth", psnr = 65.88, off = 0.014)
+
+  test("a smooth face whose corner normals lie on both sides of it is drawn, as in a POV-Ray mesh"):
+    version3("mixed-normals", psnr = 79.17, off = 0)
 
   test("smooth=\"auto\" on a mesh without normals matches POV-Ray's smooth triangles"):
     version3("auto", psnr = 48.55, off = 0.299)
