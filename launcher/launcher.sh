@@ -382,8 +382,8 @@ tracer_launch() {
   # exit first loads the JDK's logging for one debug message, 15-20 ms of every run. Options of the
   # user's may start a flight recording or an agent whose shutdown hooks must run: no halt then.
   if [ -z "${TRACER_JAVA_OPTS+set}" ]; then tracer_jvm+=(-Dtracer.exit=halt); fi
-  case "${TRACER_CACHE:-auto}" in
-    auto | off | cds) ;;
+  case "${TRACER_CACHE-}" in
+    '' | off | cds) ;;
     *)
       echo "tracer: TRACER_CACHE='$TRACER_CACHE' must be off or cds (or unset)" >&2
       exit 2

@@ -42,6 +42,10 @@ class ReplExampleSuite extends munit.FunSuite:
     assert(back(160, 110).r > back(160, 110).g * 2, back(160, 110).toString)
     Files.delete(dir.resolve("repl.png")); Files.delete(dir)
 
+  test("the console imports what these examples use, Path among them"):
+    val build = java.nio.file.Files.readString(Path.of("build.sbt"))
+    assert(build.contains("initialCommands := \"import java.nio.file.Path, "), "build.sbt")
+
   test("a scene file loads in the REPL with SceneXml.load"):
     // --- as in README.md ---
     val loaded = SceneXml.load(Path.of("scenes/showcase.xml"), Path.of("scenes"))

@@ -705,7 +705,8 @@ object Shape:
     (Ray(p.transform.pointBack(ray.origin), direction / stretch), stretch)
 
   /** The normal that shades the hit `hit` of `ray` on `shape`, facing the side the ray came from:
-    * the geometric normal, except on a smooth triangle, where it is the corners' normals
+    * the geometric normal, except on a smooth triangle or a mesh's smooth face (also as a leaf of
+    * a combination or placed shape, turned by the placements), where it is the corners' normals
     * interpolated with the hit's barycentric weights and normalised (POV-Ray's `smooth_triangle`).
     */
   def shadingNormal(shape: Shape, hit: Hit, ray: Ray): Vec3 = shape match

@@ -120,10 +120,9 @@ private[render] object Hits:
     * the geometric normal on a flat leaf.
     */
   private def smoothLeaf(shape: Shape, dx: Double, dy: Double, dz: Double, query: Query): Unit =
-    val geometric = tracer.math.Vec3(query.nx, query.ny, query.nz)
     Shape.smoothLeafNormal(shape, query.leaf, tracer.math.Vec3(query.px, query.py, query.pz)) match
       case Some(blended) =>
-        val n = blended.normalisedOr(geometric)
+        val n = blended.normalisedOr(tracer.math.Vec3(query.nx, query.ny, query.nz))
         orient(n.x, n.y, n.z, dx, dy, dz, query)
       case None => flat(query)
 

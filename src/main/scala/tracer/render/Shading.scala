@@ -370,12 +370,23 @@ final class Shading(world: World, mode: ShadingMode):
       sz: Double
   )(dx: Double, dy: Double, dz: Double, depth: Int, insides: List[Int]): Unit =
     Refraction.crossing(insides, i, world.surface(_).ior) { (eta, beyondInsides) =>
-      // The ray through starts just behind the surface.
-      val bx = px - nx * Shading.Epsilon
-      val by = py - ny * Shading.Epsilon
-      val bz = pz - nz * Shading.Epsilon
+      // The ray through starts just behind the surface; on a smooth mesh, a ray bent about the
+      // leaning normal back to the ray's side of the face's own plane starts on that side, as
+      // POV-Ray's from the surface itself does (it does not meet the face again).
+      val leaning = sx != nx || sy != ny || sz != nz
       def through(ux: Double, uy: Double, uz: Double, depthBeyond: Int): Unit =
-        traceFrom(bx, by, bz, ux, uy, uz, depthBeyond, beyondInsides)
+        val side =
+          if leaning && nx * ux + ny * uy + nz * uz > 0 then Shading.Epsilon else -Shading.Epsilon
+        traceFrom(
+          px + nx * side,
+          py + ny * side,
+          pz + nz * side,
+          ux,
+          uy,
+          uz,
+          depthBeyond,
+          beyondInsides
+        )
         val tr = red * surface.transmit
         val tg = green * surface.transmit
         val tb = blue * surface.transmit

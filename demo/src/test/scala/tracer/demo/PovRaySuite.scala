@@ -188,6 +188,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a smooth mesh inside a union that stays whole shades with its own normals"):
     version3("union-smooth", psnr = 65.88, off = 0.014)
 
+  test("a smooth mesh after a box in a turned glass union bends rays about its own normals"):
+    version3("union-smooth-glass", psnr = 58.14, off = 0.049)
+
   test("a smooth face whose corner normals lie on both sides of it is drawn, as in a POV-Ray mesh"):
     version3("mixed-normals", psnr = 79.17, off = 0)
 
