@@ -11,7 +11,8 @@ import tracer.scene.Scene
 private[cli] object Inputs:
 
   /** The scene, from `-i FILE` or standard input, with its textures and meshes (those of `reuse`
-    * while their files are unchanged, in a batch); warnings to `err`. A scene error names FILE
+    * while their files are unchanged, in a batch); warnings to `err`, and, when standard input is
+    * a terminal (`typed`) and the scene comes from it, a line saying so. A scene error names FILE
     * (`scene` for standard input) before its line.
     */
   def scene(
@@ -19,8 +20,13 @@ private[cli] object Inputs:
       in: InputStream,
       err: PrintStream,
       cwd: Path,
-      reuse: Option[SceneSources.Reuse] = None
+      reuse: Option[SceneSources.Reuse] = None,
+      typed: Boolean = false
   ): Either[String, Scene] =
+    if typed && options.input.isEmpty then
+      err.println(
+        "tracer: reading the scene from standard input (end it with Ctrl-D, or give -i FILE)"
+      )
     sceneBytes(options.input, in, cwd).flatMap { (bytes, where) =>
       val warn: String => Unit = w => err.println(s"tracer: warning: $w")
       val sources              = reuse.fold(SceneSources.files(where, warn))(

@@ -36,16 +36,33 @@ object Main:
     // Perf: standard input unbuffered, so a scene file given with `<` is read in one piece of its
     // own size (FileInputStream.readAllBytes) rather than grown chunk by chunk.
     val in     = FileInputStream(FileDescriptor.in)
-    val status = run(args.toSeq, in, System.out, System.err, Path.of("").toAbsolutePath)
+    val status =
+      run(
+        args.toSeq,
+        in,
+        System.out,
+        System.err,
+        Path.of("").toAbsolutePath,
+        Progress.isTerminal(0)
+      )
     System.out.flush()
     System.err.flush()
     if sys.props.get("tracer.exit").contains("halt") then Runtime.getRuntime.halt(status)
     else sys.exit(status)
 
   /** Runs the command on the given streams, with relative paths resolved against `cwd`, and
-    * returns the exit status. Every failure is one line on `err`, prefixed `tracer: `.
+    * returns the exit status. Every failure is one line on `err`, prefixed `tracer: `. With
+    * `typed` (standard input is a terminal), a scene read from `in` is announced on `err` first,
+    * so that a forgotten `-i` does not wait in silence.
     */
-  def run(args: Seq[String], in: InputStream, out: PrintStream, err: PrintStream, cwd: Path): Int =
+  def run(
+      args: Seq[String],
+      in: InputStream,
+      out: PrintStream,
+      err: PrintStream,
+      cwd: Path,
+      typed: Boolean = false
+  ): Int =
     def fail(status: Int, message: String): Int =
       err.println(s"tracer: $message")
       status
@@ -67,7 +84,7 @@ object Main:
             )
         case Command.UsageError(message) => fail(UsageError, s"$message (see tracer --help)")
         case Command.Render(options)     =>
-          render(options, in, err, cwd).fold(
+          render(options, in, err, cwd, typed = typed).fold(
             p => fail(p.status, p.message),
             millis =>
               if options.timing then out.println(s"Tracetime: $millis ms")
@@ -76,7 +93,8 @@ object Main:
         case Command.Batch(options, list) =>
           batch(options, list, in, out, err, cwd).fold(fail(Failure, _), identity)
         case Command.Size(options) =>
-          val size = Inputs.scene(options, in, err, cwd).map(cameraConfig(_, options))
+          val size =
+            Inputs.scene(options, in, err, cwd, typed = typed).map(cameraConfig(_, options))
           size.fold(
             fail(Failure, _),
             c =>
@@ -98,7 +116,8 @@ object Main:
       in: InputStream,
       err: PrintStream,
       cwd: Path,
-      reuse: Option[SceneSources.Reuse] = None
+      reuse: Option[SceneSources.Reuse] = None,
+      typed: Boolean = false
   ): Either[Problem, Long] =
     def failure(message: String) = Problem(Failure, message)
     val output                   = cwd.resolve(options.output)
@@ -107,7 +126,7 @@ object Main:
       _     <- floatWithoutEncoding(options, format)
       _     <- notTheScene(options, output, cwd)
       _     <- OutputFile.checkWritable(output).left.map(failure)
-      scene <- Inputs.scene(options, in, err, cwd, reuse).left.map(failure)
+      scene <- Inputs.scene(options, in, err, cwd, reuse, typed).left.map(failure)
       config = cameraConfig(scene, options)
       band <- rowsToRender(options.band, config.rows)
       _    <- fitsInMemory(config.columns, band.size).left.map(failure)

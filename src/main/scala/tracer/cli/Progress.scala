@@ -62,11 +62,13 @@ object Progress:
   private def stderrIsTerminal: Boolean =
     sys.props.get("tracer.terminal") match
       case Some(said) => said == "true"
-      case None       => fdIsTerminal
+      case None       => Progress.isTerminal(2)
 
-  /** True when this process's file descriptor 2 links to a tty device. */
-  private def fdIsTerminal: Boolean =
+  /** True when this process's file descriptor `fd` links to a tty device (Linux's /proc; false
+    * wherever that cannot be told).
+    */
+  private[cli] def isTerminal(fd: Int): Boolean =
     try
-      val target = Files.readSymbolicLink(Path.of("/proc/self/fd/2")).toString
+      val target = Files.readSymbolicLink(Path.of(s"/proc/self/fd/$fd")).toString
       target.startsWith("/dev/pts/") || target.startsWith("/dev/tty")
     catch case _: Exception => false

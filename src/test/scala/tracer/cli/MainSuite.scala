@@ -161,6 +161,28 @@ class MainSuite extends munit.FunSuite with Images with InProcess:
     assertFailed(run(d, "", "-i", "bad.xml", "o.png"), 1, "tracer: bad.xml: line 1: <camera>")
     assertFailed(run(d, "<scene><camera/></scene>", "o.png"), 1, "tracer: scene: line 1: <camera>")
 
+  dir.test("a scene typed at a terminal is announced on stderr, with how to end it or use -i"): d =>
+    def typed(args: String*) =
+      val (out, err) = (java.io.ByteArrayOutputStream(), java.io.ByteArrayOutputStream())
+      val status     = Main.run(
+        args,
+        java.io.ByteArrayInputStream(simple.getBytes(UTF_8)),
+        java.io.PrintStream(out, true),
+        java.io.PrintStream(err, true),
+        d,
+        typed = true
+      )
+      (status, err.toString(UTF_8))
+    val (status, err) = typed("-x", "8", "o.ppm")
+    assertEquals(status, 0)
+    assertEquals(
+      err,
+      "tracer: reading the scene from standard input (end it with Ctrl-D, or give -i FILE)\n"
+    )
+    // With -i, standard input is not read, so nothing is announced.
+    Files.writeString(d.resolve("s.xml"), simple)
+    assertEquals(typed("-x", "8", "-i", "s.xml", "p.ppm"), (0, ""))
+
   dir.test("nothing on standard input is one clear line"): d =>
     assertFailed(run(d, "", "o.png"), 1, "no scene on standard input")
     assertNoFilesBut(d)
