@@ -58,12 +58,18 @@ object OutputFile:
           temporary.foreach(Files.deleteIfExists)
           Left(s"cannot write '$path': ${IoFailure.reason(e)}")
       finally
-        try Runtime.getRuntime.removeShutdownHook(cleanup)
+        try Runtime.getRuntime.removeShutdownHook(cleanup): Unit
         catch case _: IllegalStateException => () // already shutting down: the hook runs
     }
 
   private def moveIntoPlace(from: Path, to: Path): Unit =
-    try Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING)
+    try
+      Files.move(
+        from,
+        to,
+        StandardCopyOption.ATOMIC_MOVE,
+        StandardCopyOption.REPLACE_EXISTING
+      ): Unit
     catch
       case _: AtomicMoveNotSupportedException =>
-        Files.move(from, to, StandardCopyOption.REPLACE_EXISTING)
+        Files.move(from, to, StandardCopyOption.REPLACE_EXISTING): Unit

@@ -105,7 +105,7 @@ object Renderer:
             onRows(y - first, count)
           })
         }
-        Await.result(done, Duration.Inf)
+        Await.result(done, Duration.Inf): Unit
       }
     // Why: rethrows the fatal error a row task carried out (RowFailure), as on this thread.
     catch case RowFailure(cause) => throw cause
