@@ -245,21 +245,11 @@ final class Shading(world: World, mode: ShadingMode):
         if light.area.isDefined then
           if leaning then shadows.areaBeside(s0x, s0y, s0z, px, py, pz, nx, ny, nz, k)
           else shadows.areaFrom(s0x, s0y, s0z, k)
-        else if leaning && nx * sdx + ny * sdy + nz * sdz < 0 then
+        else if leaning && Shading.sideToward(nx, ny, nz, sdx, sdy, sdz) < 0 then
           // A smooth face's point light that its leaning normal faces from behind the face's own
-          // plane: the shadow ray starts on the far side and passes the face, as POV-Ray's, which
-          // starts on the surface itself.
-          shadows.pointToward(
-            k,
-            depth,
-            px - nx * Shading.Epsilon,
-            py - ny * Shading.Epsilon,
-            pz - nz * Shading.Epsilon,
-            sdx,
-            sdy,
-            sdz,
-            reach
-          )
+          // plane: the shadow ray starts on the far side and passes the face.
+          val e = -Shading.Epsilon
+          shadows.pointToward(k, depth, px + nx * e, py + ny * e, pz + nz * e, sdx, sdy, sdz, reach)
         else if cos < 0 && world.ownBlocks(i, face, s0x, s0y, s0z, sdx, sdy, sdz, reach, query)
         then 0.0
         else shadows.pointToward(k, depth, s0x, s0y, s0z, sdx, sdy, sdz, reach)
@@ -341,13 +331,12 @@ final class Shading(world: World, mode: ShadingMode):
       depth: Int,
       insides: List[Int]
   ): Unit =
-    val k    = 2 * (sx * dx + sy * dy + sz * dz)
-    val tx   = dx - sx * k
-    val ty   = dy - sy * k
-    val tz   = dz - sz * k
-    val side =
-      if (sx != nx || sy != ny || sz != nz) && nx * tx + ny * ty + nz * tz < 0 then -Shading.Epsilon
-      else Shading.Epsilon
+    val k       = 2 * (sx * dx + sy * dy + sz * dz)
+    val tx      = dx - sx * k
+    val ty      = dy - sy * k
+    val tz      = dz - sz * k
+    val leaning = sx != nx || sy != ny || sz != nz
+    val side    = if leaning then Shading.sideToward(nx, ny, nz, tx, ty, tz) else Shading.Epsilon
     traceFrom(px + nx * side, py + ny * side, pz + nz * side, tx, ty, tz, depth - 1, insides)
 
   /** transmit · colour(ray through the surface) + the mirror term, left in red, green and blue;
@@ -375,8 +364,7 @@ final class Shading(world: World, mode: ShadingMode):
       // POV-Ray's from the surface itself does (it does not meet the face again).
       val leaning = sx != nx || sy != ny || sz != nz
       def through(ux: Double, uy: Double, uz: Double, depthBeyond: Int): Unit =
-        val side =
-          if leaning && nx * ux + ny * uy + nz * uz > 0 then Shading.Epsilon else -Shading.Epsilon
+        val side = if leaning then Shading.sideToward(nx, ny, nz, ux, uy, uz) else -Shading.Epsilon
         traceFrom(
           px + nx * side,
           py + ny * side,
@@ -437,6 +425,22 @@ final class Shading(world: World, mode: ShadingMode):
 object Shading:
   /** ε, the offset of shadow and reflected ray origins from the surface (world units). */
   val Epsilon: Double = 1e-4
+
+  /** The offset along n, the face's own unit normal facing the arriving ray, at which a new ray
+    * in direction d starts off the surface: +ε on the side n faces when d goes there (n · d ≥ 0),
+    * −ε beyond it, as Mitsuba's `spawn_ray` and POV-Ray's rays from the surface itself pass the
+    * face whichever way they go. On a flat face a reflection or a lit point's shadow ray always
+    * stays on n's side; on a smooth mesh one about the leaning normal may not.
+    */
+  inline def sideToward(
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      dx: Double,
+      dy: Double,
+      dz: Double
+  ): Double =
+    if nx * dx + ny * dy + nz * dz < 0 then -Epsilon else Epsilon
 
   /** rn · Sd below this puts a light behind the surface (POV-Ray's EPSILON). */
   val FarSide: Double = 1e-10

@@ -201,18 +201,19 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
       grid(k) =
         if !(reach > 0) then 1.0
-        else if nx * tx + ny * ty + nz * tz < 0 then
-          val e = Shading.Epsilon
-          pointAlong(
-            px - nx * e,
-            py - ny * e,
-            pz - nz * e,
-            tx / reach,
-            ty / reach,
-            tz / reach,
-            reach
-          )
-        else pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
+        else
+          val side = Shading.sideToward(nx, ny, nz, tx, ty, tz)
+          if side < 0 then
+            pointAlong(
+              px + nx * side,
+              py + ny * side,
+              pz + nz * side,
+              tx / reach,
+              ty / reach,
+              tz / reach,
+              reach
+            )
+          else pointAlong(fx, fy, fz, tx / reach, ty / reach, tz / reach, reach)
     grid(k)
 
   /** [[pointAlong]] toward the world's light `k`, a point light, from a point shaded `depth`

@@ -278,9 +278,7 @@ object PathTracer:
               // The new ray starts off the face's own plane on the side it goes to, as Mitsuba's
               // spawn_ray does: on a smooth mesh a bounce about the shading normal may go behind
               // the face's plane, and passes it (on a flat face, the side a reflection stays on).
-              val side =
-                if nx * out.sx + ny * out.sy + nz * out.sz < 0 then -Shading.Epsilon
-                else Shading.Epsilon
+              val side = Shading.sideToward(nx, ny, nz, out.sx, out.sy, out.sz)
               ox = px + nx * side
               oy = py + ny * side
               oz = pz + nz * side
@@ -359,14 +357,14 @@ object PathTracer:
           val reach   =
             if density == 0 || java.lang.Double.isInfinite(out.distance) then out.distance
             else out.distance - 2 * Shading.Epsilon
+          val side  = Shading.sideToward(nx, ny, nz, out.lx, out.ly, out.lz)
           val share =
-            if nx * out.lx + ny * out.ly + nz * out.lz >= 0 then
-              visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
+            if side > 0 then visibility.alongFrom(fx, fy, fz, out.lx, out.ly, out.lz, reach)
             else
               visibility.alongFrom(
-                px - nx * Shading.Epsilon,
-                py - ny * Shading.Epsilon,
-                pz - nz * Shading.Epsilon,
+                px + nx * side,
+                py + ny * side,
+                pz + nz * side,
                 out.lx,
                 out.ly,
                 out.lz,
