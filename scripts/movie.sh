@@ -60,6 +60,12 @@ out_dir=$(dirname "$output")
 [ -d "$out_dir" ] || die "the directory of OUTPUT '$out_dir' does not exist" 2
 name=$(basename "$output")
 frames_dir="$out_dir/${name%.*}-frames"
+tmp_movie="$out_dir/.${name}.$$.partial.${name##*.}"
+# A frames directory this run makes goes again if the run ends with nothing in it (a refused
+# TRACER_OPTS, a list without scenes): rmdir leaves a directory holding frames alone.
+made_frames_dir=false
+[ -d "$frames_dir" ] || made_frames_dir=true
+trap 'rm -f "$tmp_movie"; if $made_frames_dir; then rmdir "$frames_dir" 2>/dev/null; fi' EXIT
 mkdir -p "$frames_dir" || die "cannot create '$frames_dir'"
 
 # The scene files, in order, as absolute paths.
@@ -121,8 +127,6 @@ command -v ffmpeg >/dev/null 2>&1 ||
   die "ffmpeg is not installed, so the frames in '$frames_dir' were not encoded: install it (Debian/Ubuntu: sudo apt-get install ffmpeg; macOS: brew install ffmpeg) and run this again"
 
 # Frames of odd width or height are padded by one pixel: the encoders need even sizes.
-tmp_movie="$out_dir/.${name}.$$.partial.${name##*.}"
-trap 'rm -f "$tmp_movie"' EXIT
 if ! ffmpeg -hide_banner -loglevel error -y -framerate "$fps" -i "$frames_dir/frame-%06d.png" -frames:v "$count" \
   -vf "pad=ceil(iw/2)*2:ceil(ih/2)*2" -r "$fps" "${codec[@]}" "$tmp_movie" </dev/null; then
   die "ffmpeg could not encode '$output'"

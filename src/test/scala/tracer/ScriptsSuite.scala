@@ -183,7 +183,21 @@ class ScriptsSuite extends MovieWorkspace:
     )
     assert(!e.err.contains("failed"), e.err)
     assert(!e.out.contains("Total") && !Files.exists(d.resolve("bad.mp4")), e.out)
-    assertEquals(times(d.resolve("bad-frames")).length, 0)
+    // Nothing left behind: the frames directory the run made goes again, empty.
+    assert(!Files.exists(d.resolve("bad-frames")))
+    // Nor after a list that names no scene, while a directory made before the run stays.
+    val empty = Files.writeString(d.resolve("empty.txt"), "# no frames\n")
+    Files.createDirectory(d.resolve("kept-frames"))
+    for output <- List("none.mp4", "kept.mp4") do
+      val refused =
+        run(
+          List(movie.toString, d.resolve("logging tracer").toString, empty.toString, output),
+          cwd = d
+        )
+      assertEquals(refused.status, 1, refused.err)
+      assert(refused.err.contains("names no scene files"), refused.err)
+    assert(!Files.exists(d.resolve("none-frames")))
+    assert(Files.isDirectory(d.resolve("kept-frames")))
 
   workspace.test(
     "ab.sh times each jar on the scene, alternating, and keeps the pictures asked for"
