@@ -243,8 +243,8 @@ final class Shading(world: World, mode: ShadingMode):
       // shadowed by the surface itself, so that is tested first (World.ownBlocks).
       val share =
         if light.area.isDefined then
-          if leaning then shadows.areaBeside(s0x, s0y, s0z, px, py, pz, nx, ny, nz, k)
-          else shadows.areaFrom(s0x, s0y, s0z, k)
+          // Each sub-light from the side of the face's plane it lies on (Shadows.areaBeside).
+          shadows.areaBeside(s0x, s0y, s0z, px, py, pz, nx, ny, nz, k)
         else if leaning && Shading.sideToward(nx, ny, nz, sdx, sdy, sdz) < 0 then
           // A smooth face's point light that its leaning normal faces from behind the face's own
           // plane: the shadow ray starts on the far side and passes the face.

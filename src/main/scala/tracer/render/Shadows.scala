@@ -89,11 +89,12 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
   def areaFrom(fx: Double, fy: Double, fz: Double, k: Int): Double =
     areaBeside(fx, fy, fz, fx, fy, fz, 0, 0, 0, k)
 
-  /** [[areaFrom]] S0 = (fx, fy, fz) just off a smooth mesh's face at p, whose own unit normal n
-    * faces the ray: a sub-light behind the face's plane (n · (sub-light − S0) < 0), which the
-    * leaning normal may still face, is sought from p − ε·n on the far side, so that its shadow
-    * ray passes the face, as POV-Ray's from the surface itself does. With n = 0 every sub-light is
-    * sought from S0 ([[areaFrom]]).
+  /** [[areaFrom]] S0 = (fx, fy, fz) just off a face at p, whose own unit normal n faces the ray:
+    * a sub-light behind the face's plane (n · (sub-light − S0) < 0), which off-centre sub-lights
+    * of a light whose centre is in front, or a smooth mesh's leaning normal, may be, is sought
+    * from p − ε·n on the far side, so that its shadow ray passes the face, as POV-Ray's from the
+    * surface itself does (`Trace::TracePointLightShadowRay` ignores its own surface there). With
+    * n = 0, or every sub-light in front, every sub-light is sought from S0 ([[areaFrom]]).
     */
   def areaBeside(
       fx: Double,
@@ -112,9 +113,15 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
       case Some(area) =>
         java.util.Arrays.fill(grid, 0, area.samplesA * area.samplesB, -1.0)
         val positions = world.subLights(k)
-        val flat      = nx == 0 && ny == 0 && nz == 0
-        // A beam holds the rays from S0 alone: a smooth face's rays walk the tree.
-        if beam.length > 0 && flat then aim(fx, fy, fz, positions, area)
+        val beside    = Shadows.anyBehind(positions, fx, fy, fz, nx, ny, nz)
+        // A beam holds the rays from S0 alone: when a sub-light is sought from beyond the face,
+        // the rays walk the tree.
+        if beam.length > 0 && !beside then aim(fx, fy, fz, positions, area)
+        // Why n = 0 when no sub-light is behind: each is then sought from S0 (no tuple: a shading
+        // point's hot path).
+        val sx    = if beside then nx else 0.0
+        val sy    = if beside then ny else 0.0
+        val sz    = if beside then nz else 0.0
         val share =
           cell(
             fx,
@@ -123,9 +130,9 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
             px,
             py,
             pz,
-            nx,
-            ny,
-            nz,
+            sx,
+            sy,
+            sz,
             positions,
             area,
             0,
@@ -780,6 +787,30 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
 
 /** The margin of [[Shadows]]' beams. */
 object Shadows:
+  /** True when some sub-light at `positions` (x, y, z at 3k) lies behind the plane through
+    * (fx, fy, fz) of normal n (n · (sub-light − f) < 0, as [[Shading.sideToward]] weighs it);
+    * false for n = 0.
+    */
+  def anyBehind(
+      positions: IArray[Double],
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double
+  ): Boolean =
+    // Perf: a plain loop over the few sub-lights, once a shading point and area light.
+    var behind = false
+    var k      = 0
+    while !behind && k < positions.length do
+      val tx = positions(k) - fx
+      val ty = positions(k + 1) - fy
+      val tz = positions(k + 2) - fz
+      behind = Shading.sideToward(nx, ny, nz, tx, ty, tz) < 0
+      k += 3
+    behind
+
   /** A beam's margin, as a share of the size of the coordinates compared. */
   val Margin: Double = 1e-7
 

@@ -210,6 +210,34 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     assertEquals(lit(Light(lamp, area = Some(small))), lit(Light(lamp)))
     assert(lit(Light(lamp)).head > 0)
 
+  // A flat wall z = 0 under an area light whose centre is in front of it and whose far
+  // sub-lights lie behind its plane. POV-Ray's sub-lights' shadow rays start on the surface and
+  // pass it, so every sub-light reaches the point and the wall is lit as by a point light at the
+  // centre; rays from S0 on the camera's side would lose the two behind to the wall itself.
+  // Behind a ball the far sub-lights stay dark: their rays meet the ball's far side.
+  test("a flat face is lit by every sub-light of an area light, those behind its plane too"):
+    val lamp                                   = Vec3(0, 0, -0.2)
+    val wide                                   = AreaLight(Vec3(1, 0, 0), Vec3(0, 0, 1), 2, 2)
+    def lit(light: Light, shape: Shape = wall) = samples(
+      render(
+        Scene(
+          Camera(Vec3(0, 0, -3), Vec3.Zero),
+          Colour.Black,
+          List(light),
+          List(SceneObject(shape, Surface(diffuse = 1, pigment = Pigment.Solid(Colour.grey(0.5)))))
+        )
+      )
+    )
+    assertEquals(lit(Light(lamp, area = Some(wide))), lit(Light(lamp)))
+    assertEquals(lit(Light(lamp)), grey(0.5))
+    // A ball of radius 1 whose nearest point is the origin: the sub-lights at z = 0.3 lie behind
+    // the tangent plane and inside the ball, so their rays end before its far side: still lit.
+    // Those of a light behind the ball's far side (centre 2.5 beyond) are blocked by the ball.
+    val ball = Sphere(Vec3(0, 0, 1), 1)
+    assertEquals(lit(Light(lamp, area = Some(wide)), ball), lit(Light(lamp), ball))
+    val deep = AreaLight(Vec3(0.5, 0, 0), Vec3(0, 0, 5), 2, 2)
+    assertEquals(lit(Light(lamp, area = Some(deep)), ball), grey(0.25))
+
   test("phong-size and roughness alone change nothing"):
     val plain = Surface(phongSize = 5, roughness = 0.5)
     assertEquals(Shading.highlight(plain, facing, view, at(10)), 0.0)

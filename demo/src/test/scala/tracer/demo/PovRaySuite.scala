@@ -194,6 +194,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a smooth face whose corner normals lie on both sides of it is drawn, as in a POV-Ray mesh"):
     version3("mixed-normals", psnr = 79.17, off = 0)
 
+  test("an area light's sub-lights behind a face's plane light it, as POV-Ray's rays from it do"):
+    version3("area-behind", psnr = 71.48, off = 0)
+
   test("smooth=\"auto\" on a mesh without normals matches POV-Ray's smooth triangles"):
     version3("auto", psnr = 48.55, off = 0.299)
 
