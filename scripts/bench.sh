@@ -286,7 +286,7 @@ if $gallery || $loading; then
   echo "|---|---|---|---|$($povray && echo '---|---|')"
   if $gallery; then
     for name in showcase materials solids; do
-      (cd "$home/scenes" && demo tracer.demo.PovRay "$name.xml" > "$out/$name.pov")
+      (cd "$home/scenes" && demo tracer.demo.PovRay "$name.xml" 5 "$width" "$height" > "$out/$name.pov")
       ratio_row "$name" "$width" "$height" "$home/scenes" "$name.xml" "$out/$name.pov" -g srgb
     done
   else

@@ -4,6 +4,7 @@ import java.util.Locale
 import tracer.geometry.*
 import tracer.image.Colour
 import tracer.math.{Placement, Vec3}
+import tracer.cli.Resolution
 import tracer.render.{CameraConfig, Projection}
 import tracer.scene.*
 
@@ -21,16 +22,29 @@ object PovRay:
 
   /** The POV-Ray scene for `scene`, tracing up to `depth` reflections. With `quick`, the twin of
     * quick mode (`-q`): one shadowless light at the eye and every surface its plain pigment
-    * with diffuse 1, which POV-Ray shades as colour · |rn · Rd|.
+    * with diffuse 1, which POV-Ray shades as colour · |rn · Rd|. With `pixels` (X, Y), the
+    * camera's image plane is the one the tracer uses for `-x X -y Y` (cli.md: W kept, H = W·Y/X),
+    * so that a picture of another shape than the camera's `width` and `height` is not distorted
+    * in the twin alone.
     */
-  def write(scene: Scene, depth: Int = CameraConfig.DefaultDepth, quick: Boolean = false): String =
-    if !quick then twin(scene, depth, scene.lights.map(light))
+  def write(
+      scene: Scene,
+      depth: Int = CameraConfig.DefaultDepth,
+      quick: Boolean = false,
+      pixels: Option[(Int, Int)] = None
+  ): String =
+    val sized = pixels.fold(scene) { (x, y) =>
+      val c    = scene.camera
+      val size = Resolution.resolve(None, None, Some(x), Some(y), c.width, c.height)
+      scene.copy(camera = c.copy(width = size.width, height = size.height))
+    }
+    if !quick then twin(sized, depth, sized.lights.map(light))
     else
-      val eye  = s"light_source { ${vec(scene.camera.location)} color rgb <1, 1, 1> shadowless }"
-      val flat = scene.objects.map(o =>
+      val eye  = s"light_source { ${vec(sized.camera.location)} color rgb <1, 1, 1> shadowless }"
+      val flat = sized.objects.map(o =>
         o.copy(surface = plain(o.surface), leafSurfaces = o.leafSurfaces.map(plain))
       )
-      twin(scene.copy(objects = flat), depth, Seq(eye))
+      twin(sized.copy(objects = flat), depth, Seq(eye))
 
   /** A surface as quick mode sees it: its pigment alone, diffuse 1. */
   private def plain(s: Surface): Surface = Surface(diffuse = 1, pigment = s.pigment)
@@ -171,14 +185,15 @@ object PovRay:
   private def num(d: Double): String    = String.format(Locale.ROOT, "%.17g", d)
 
   /** Prints the POV-Ray twin of the scene file named by the first argument (its textures and
-    * meshes relative to its directory), tracing as many reflections as the second (default 5).
+    * meshes relative to its directory), tracing as many reflections as the second (default 5),
+    * for a picture of the third and fourth's pixels when given (as the tracer's `-x X -y Y`).
     * With `--beside FILE…`, writes each FILE's twin beside it instead (`frame.xml` → `frame.pov`).
     */
   def main(args: Array[String]): Unit =
-    def twin(name: String, depth: Int): String =
+    def twin(name: String, depth: Int, pixels: Option[(Int, Int)] = None): String =
       val file = java.nio.file.Path.of(name).toAbsolutePath
       tracer.io.SceneXml.load(file, file.getParent) match
-        case Right(scene) => write(scene, depth)
+        case Right(scene) => write(scene, depth, pixels = pixels)
         case Left(error)  => System.err.println(error); sys.exit(1)
     args.toList match
       case "--beside" :: files =>
@@ -188,6 +203,9 @@ object PovRay:
             twin(name, CameraConfig.DefaultDepth)
           )
         }
-      case name :: depth =>
+      case List(name, depth, x, y) => print(twin(name, depth.toInt, Some((x.toInt, y.toInt))))
+      case name :: depth if depth.length <= 1 =>
         print(twin(name, depth.headOption.fold(CameraConfig.DefaultDepth)(_.toInt)))
-      case Nil => System.err.println("usage: PovRay SCENE [DEPTH] | --beside SCENE..."); sys.exit(2)
+      case _ =>
+        System.err.println("usage: PovRay SCENE [DEPTH [X Y]] | --beside SCENE...")
+        sys.exit(2)
