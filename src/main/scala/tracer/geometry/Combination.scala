@@ -6,13 +6,14 @@ private[geometry] object Combination:
   /** The crossings of `csg` along `ray` at t > 0, in increasing t, their leaves numbered in the
     * whole tree. A child's crossing counts where the point is, for every other child, inside it
     * (intersection), or inside the first and outside the others (difference); a union keeps
-    * them all.
+    * them all. `inverted`: the crossings of the complement, as POV-Ray inverts a later child of a
+    * difference ([[inverts]]).
     */
-  def crossings(csg: Csg, ray: Ray): List[Crossing] =
+  def crossings(csg: Csg, ray: Ray, inverted: Boolean = false): List[Crossing] =
     val all = csg.children.indices.toList.flatMap { i =>
       Shape
-        .crossings(csg.children(i), ray)
-        .filter(c => keeps(csg, i, ray.at(c.t)))
+        .crossings(csg.children(i), ray, inverted != inverts(csg, i))
+        .filter(c => keeps(csg, i, ray.at(c.t), inverted))
         .map(c =>
           // A subtracted child's outside is the inside of the whole: its normals turn round.
           val outward =
@@ -29,13 +30,25 @@ private[geometry] object Combination:
     case CsgOperation.Difference   =>
       Shape.inside(csg.children.head, p) && !csg.children.tail.exists(Shape.inside(_, p))
 
-  /** True when a crossing of child `i` at `p` is on the surface of the whole. */
-  private def keeps(csg: Csg, i: Int, p: tracer.math.Vec3): Boolean = csg.operation match
-    case CsgOperation.Union        => true
-    case CsgOperation.Intersection =>
-      csg.children.indices.forall(j => j == i || Shape.inside(csg.children(j), p))
-    case CsgOperation.Difference =>
-      csg.children.indices.forall { j =>
-        j == i || (if j == 0 then Shape.inside(csg.children(j), p)
-                   else !Shape.inside(csg.children(j), p))
-      }
+  /** True when child `i` of `csg` enters it as its complement: a later child of a difference
+    * (POV-Ray's difference is the intersection of the first child with the others inverted).
+    */
+  def inverts(csg: Csg, i: Int): Boolean = csg.operation == CsgOperation.Difference && i > 0
+
+  /** True when a crossing of child `i` at `p` is on the surface of the whole, or with `inverted`
+    * of its complement as POV-Ray inverts it (`CSGUnion::Invert` and the others, by De Morgan):
+    * an inverted union is the intersection of its inverted children, keeping a child's crossing
+    * only where the point is outside every other child (so the inner surfaces of a union used to
+    * cut are not cut faces); an inverted intersection or difference is a union, keeping all.
+    */
+  private def keeps(csg: Csg, i: Int, p: tracer.math.Vec3, inverted: Boolean): Boolean =
+    csg.operation match
+      case CsgOperation.Union =>
+        !inverted || csg.children.indices.forall(j => j == i || !Shape.inside(csg.children(j), p))
+      case CsgOperation.Intersection =>
+        inverted || csg.children.indices.forall(j => j == i || Shape.inside(csg.children(j), p))
+      case CsgOperation.Difference =>
+        inverted || csg.children.indices.forall { j =>
+          j == i || (if j == 0 then Shape.inside(csg.children(j), p)
+                     else !Shape.inside(csg.children(j), p))
+        }

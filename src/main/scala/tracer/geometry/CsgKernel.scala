@@ -10,9 +10,10 @@ package tracer.geometry
 private[geometry] object CsgKernel:
 
   /** Combination.crossings: each child's crossings kept where the others' inside tests say the
-    * point is on the whole's surface, normals of subtracted children turned round, leaves
-    * renumbered, all sorted by t (stably, children in order). A child whose box the ray misses
-    * has no crossings and contains none of the others' ([[reach]]), so it is skipped.
+    * point is on the whole's surface (with `inverted`, its complement's), normals of subtracted
+    * children turned round, leaves renumbered, all sorted by t (stably, children in order). A
+    * child whose box the ray misses has no crossings and contains none of the others' ([[reach]]),
+    * so it is skipped.
     */
   private[geometry] def combination(
       c: Csg,
@@ -24,26 +25,40 @@ private[geometry] object CsgKernel:
       dz: Double,
       buffer: CrossingBuffer,
       from: Int,
-      normals: Boolean
+      normals: Boolean,
+      inverted: Boolean = false
   ): Int =
     val ix   = 1 / dx
     val iy   = 1 / dy
     val iz   = 1 / dz
     val mask = reach(c, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity)
-    if !whole(c, mask) then from
+    if !whole(c, mask, inverted) then from
     else
       // Perf: the children's crossings are written after the kept ones and compacted in place.
       var kept = from
       var i    = 0
       while i < c.parts.length do
         if met(c, mask, i, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity) then
-          val end   = Kernel.collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, kept, normals)
-          val flip  = c.operation == CsgOperation.Difference && i > 0
+          val flip = c.operation == CsgOperation.Difference && i > 0
+          val end  =
+            Kernel.collect(
+              c.parts(i),
+              ox,
+              oy,
+              oz,
+              dx,
+              dy,
+              dz,
+              buffer,
+              kept,
+              normals,
+              inverted != flip
+            )
           val first = c.partLeaves(i)
           var k     = kept
           while k < end do
             val t = buffer.t(k)
-            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t) then
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inverted) then
               if k != kept then buffer.move(k, kept)
               if flip then
                 buffer.nx(kept) = -buffer.nx(kept)
@@ -81,7 +96,7 @@ private[geometry] object CsgKernel:
     val iy   = 1 / dy
     val iz   = 1 / dz
     val mask = reach(c, ox, oy, oz, ix, iy, iz, limit)
-    if !whole(c, mask) then from
+    if !whole(c, mask, inverted = false) then from
     else
       // Perf: the best crossing so far at `from`, each child's crossings after it (SolidsBench).
       var best = Double.PositiveInfinity
@@ -91,11 +106,23 @@ private[geometry] object CsgKernel:
         // found, the mask, made with the limit, says all there is).
         val bound = if best < limit then best else Double.PositiveInfinity
         if met(c, mask, i, ox, oy, oz, ix, iy, iz, bound) then
-          val end = Kernel.collect(c.parts(i), ox, oy, oz, dx, dy, dz, buffer, from + 1, normals)
-          var k   = from + 1
+          val end = Kernel.collect(
+            c.parts(i),
+            ox,
+            oy,
+            oz,
+            dx,
+            dy,
+            dz,
+            buffer,
+            from + 1,
+            normals,
+            Combination.inverts(c, i)
+          )
+          var k = from + 1
           while k < end && buffer.t(k) < best && buffer.t(k) <= limit do
             val t = buffer.t(k)
-            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t) then
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inverted = false) then
               best = t
               buffer.move(k, from)
               if c.operation == CsgOperation.Difference && i > 0 then
@@ -137,12 +164,14 @@ private[geometry] object CsgKernel:
     mask
 
   /** True when the ray may cross the whole: every child of an intersection met, the first child
-    * of a difference met (a union: always).
+    * of a difference met (a union, or any complement, which keeps crossings of every child met:
+    * always).
     */
-  private inline def whole(c: Csg, mask: Long): Boolean = c.operation match
-    case CsgOperation.Union        => true
-    case CsgOperation.Intersection => mask == -1L
-    case CsgOperation.Difference   => (mask & 1L) != 0
+  private inline def whole(c: Csg, mask: Long, inverted: Boolean): Boolean =
+    inverted || (c.operation match
+      case CsgOperation.Union        => true
+      case CsgOperation.Intersection => mask == -1L
+      case CsgOperation.Difference   => (mask & 1L) != 0)
 
   /** Child `i` may have crossings at t ≤ `limit`: its bit of `mask` (from [[reach]] with a limit
     * at least this one), and its box entered by then when the limit is lower or `i` ≥ 64.
@@ -163,27 +192,50 @@ private[geometry] object CsgKernel:
       (i < 64 && limit == Double.PositiveInfinity ||
         boxEntry(c.partBoxes, 6 * i, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity)
 
-  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole; a child
-    * whose bit in `mask` is clear does not contain p.
+  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole (with
+    * `inverted`, of its complement); a child whose bit in `mask` is clear does not contain p.
     */
-  private def keeps(c: Csg, i: Int, mask: Long, px: Double, py: Double, pz: Double): Boolean =
+  private def keeps(
+      c: Csg,
+      i: Int,
+      mask: Long,
+      px: Double,
+      py: Double,
+      pz: Double,
+      inverted: Boolean
+  ): Boolean =
     // Perf: `forall` over the children as loops on their array (SolidsBench).
-    c.operation match
-      case CsgOperation.Union        => true
-      case CsgOperation.Intersection =>
-        // A clear bit makes the whole a miss ([[whole]]), so every child is tested here.
+    if inverted then
+      // An inverted union keeps a crossing outside every other child; the others keep them all.
+      c.operation != CsgOperation.Union || {
         var j = 0
-        while j < c.parts.length && (j == i || Kernel.inside(c.parts(j), px, py, pz)) do j += 1
+        while j < c.parts.length &&
+          (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(c.parts(j), px, py, pz))
+        do j += 1
         j == c.parts.length
-      case CsgOperation.Difference =>
-        // Inside the first child and outside every later one, child i aside.
-        (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) && {
-          var j = 1
-          while j < c.parts.length &&
-            (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(c.parts(j), px, py, pz))
-          do j += 1
+      }
+    else
+      c.operation match
+        case CsgOperation.Union        => true
+        case CsgOperation.Intersection =>
+          // A clear bit makes the whole a miss ([[whole]]), so every child is tested here.
+          var j = 0
+          while j < c.parts.length && (j == i || Kernel.inside(c.parts(j), px, py, pz)) do j += 1
           j == c.parts.length
-        }
+        case CsgOperation.Difference =>
+          // Inside the first child and outside every later one, child i aside.
+          (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) && {
+            var j = 1
+            while j < c.parts.length &&
+              (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(
+                c.parts(j),
+                px,
+                py,
+                pz
+              ))
+            do j += 1
+            j == c.parts.length
+          }
 
   /** The distance at which the ray (origin o, inverse direction i) enters the box of six doubles
     * at `b` of `boxes`, or +∞ when it misses it at 0 ≤ t ≤ `limit` (Bvh.entry's slab test).

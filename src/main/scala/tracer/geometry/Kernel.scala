@@ -237,7 +237,8 @@ object Kernel:
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
     * returns the index after the last. The same crossings bit for bit as the reference's list;
     * with `normals` false their normals are left unset (Perf: a distance needs only the ts, and
-    * the cone's, torus's and placement's normals cost a square root each).
+    * the cone's, torus's and placement's normals cost a square root each); with `inverted`, the
+    * crossings of the shape's complement (a later child of a difference: [[Shape.crossings]]).
     */
   def collect(
       shape: Shape,
@@ -249,7 +250,8 @@ object Kernel:
       dz: Double,
       buffer: CrossingBuffer,
       from: Int,
-      normals: Boolean = true
+      normals: Boolean = true,
+      inverted: Boolean = false
   ): Int = shape match
     case s: Sphere =>
       val ocx  = s.centre.x - ox
@@ -290,10 +292,11 @@ object Kernel:
     case t: Torus  => TorusKernel.torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case p: Placed =>
       ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
-        val end = collect(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from, normals)
+        val end = collect(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from, normals, inverted)
         broughtBack(p.back, s, buffer, from, end, normals)
       }
-    case c: Csg => CsgKernel.combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals)
+    case c: Csg =>
+      CsgKernel.combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals, inverted)
 
   /** Runs `body` on the ray taken into `p`'s own space (Shape.ownSpace on doubles): its origin,
     * its unit direction and the stretch s by which its distances are longer there.

@@ -608,9 +608,12 @@ object Shape:
     facingHit(t, ray.at(t), mesh.faceNormal(face), face, ray)
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
-    * constructive solid geometry combines. `ray.direction` must be a unit vector.
+    * constructive solid geometry combines. `ray.direction` must be a unit vector. With
+    * `inverted`, the crossings of the shape's complement as POV-Ray makes it for a later child of
+    * a difference: the same for a primitive, De Morgan's dual rules for a combination
+    * ([[Combination.crossings]]).
     */
-  def crossings(shape: Shape, ray: Ray): List[Crossing] = shape match
+  def crossings(shape: Shape, ray: Ray, inverted: Boolean = false): List[Crossing] = shape match
     case s: Sphere =>
       val oc   = s.centre - ray.origin
       val tca  = oc.dot(ray.direction)
@@ -636,10 +639,10 @@ object Shape:
     case t: Torus  => Solids.torusCrossings(t, ray)
     case p: Placed =>
       val (local, stretch) = ownSpace(p, ray)
-      crossings(p.shape, local).map(c =>
+      crossings(p.shape, local, inverted).map(c =>
         Crossing(c.t / stretch, p.transform.normal(c.normal).normalisedOr(c.normal), c.leaf)
       )
-    case c: Csg => Combination.crossings(c, ray)
+    case c: Csg => Combination.crossings(c, ray, inverted)
 
   /** True when `point` is inside the solid `shape` (POV-Ray's inside tests, their tolerances
     * included): for a plane, the side its normal points away from; triangles have no inside.

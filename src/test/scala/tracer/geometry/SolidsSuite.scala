@@ -184,6 +184,43 @@ class SolidsSuite extends munit.FunSuite:
     assertEquals(Shape.distance(both, Ray(Vec3(-5, 0, 0.5), Vec3.UnitX)), Double.PositiveInfinity)
     assert(!Shape.inside(both, Vec3.Zero))
 
+  test("a union used to cut cuts with its outer surface only, as POV-Ray inverts it"):
+    // A box less the union of a ball and the half-space y < 0. POV-Ray's difference is the
+    // intersection of the box with the union's complement, the intersection of the ball's and
+    // the half-space's complements: of the union's surfaces only those outside its other child
+    // are cut faces. Straight down at x = 0.5: the box's top (y = 2), then the ball's surface
+    // (y = 0.866, above the half-space). The half-space's plane inside the ball (y = 0) and the
+    // ball's lower half inside the half-space (y = −0.866) are the union's inner surfaces, in
+    // empty space once cut: not crossings. The box's bottom lies inside the cutter.
+    val ball  = Sphere(Vec3.Zero, 1)
+    val below = Plane.at(Vec3.UnitY, 0)
+    val cut   = Csg(
+      CsgOperation.Difference,
+      Vector(Box(Vec3(-2, -2, -2), Vec3(2, 2, 2)), Csg(CsgOperation.Union, Vector(ball, below)))
+    )
+    val down    = ray(Vec3(0.5, 5, 0), Vec3(0, -1, 0))
+    val heights = Shape.crossings(cut, down).map(c => 5 - c.t)
+    assertEquals(heights.length, 2, heights)
+    assert(near(heights(0), 2) && near(heights(1), Math.sqrt(0.75)), heights)
+    // The same through the kernel, and a cutter that is an intersection or a difference keeps
+    // all its children's crossings inside the box, as POV-Ray's inverted ones (unions) do: the
+    // ball's lower half too, under a cutter of the ball and the half-space y > 0.
+    val b = CrossingBuffer()
+    assertEquals(Kernel.collect(cut, 0.5, 5, 0, 0, -1, 0, b, 0), 2)
+    val above = Plane.at(-Vec3.UnitY, 0)
+    val lens  = Csg(
+      CsgOperation.Difference,
+      Vector(
+        Box(Vec3(-2, -2, -2), Vec3(2, 2, 2)),
+        Csg(CsgOperation.Intersection, Vector(ball, above))
+      )
+    )
+    val seen = Shape.crossings(lens, down).map(c => 5 - c.t)
+    assertEquals(seen.length, 5, seen) // top, ball (y > 0), plane, ball (y < 0), bottom
+    assertEquals(Kernel.collect(lens, 0.5, 5, 0, 0, -1, 0, b, 0), 5)
+    // The solids themselves are unchanged: inside the box and outside the union.
+    assert(Shape.inside(cut, Vec3(1.5, 0.5, 1.5)) && !Shape.inside(cut, Vec3(0.5, 0.5, 0)))
+
   test("Polynomial.roots finds every real root of a quartic in an interval, in order"):
     // (x − 1)(x − 2)(x − 3)(x − 4) = x⁴ − 10x³ + 35x² − 50x + 24
     val c     = IArray(24.0, -50.0, 35.0, -10.0, 1.0)

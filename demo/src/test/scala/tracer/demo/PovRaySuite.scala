@@ -198,6 +198,9 @@ class PovRaySuite extends munit.FunSuite:
   test("an area light's sub-lights behind a face's plane light it, as POV-Ray's rays from it do"):
     version3("area-behind", psnr = 71.48, off = 0)
 
+  test("a union that cuts cuts with its outer surface only, as POV-Ray's inverted union"):
+    version3("cutter-union", psnr = 80.17, off = 0)
+
   test("a camera of another shape than the picture's is drawn with the tracer's W and H"):
     version3("aspect", psnr = 55.72, off = 0.049)
 
