@@ -127,7 +127,8 @@ class TracerMixture(mi.BSDF):
         # A smooth lobe's direction: weighed by every smooth lobe (the delta ones give 0 there).
         f, pdf = self.eval_pdf(ctx, si, bs.wo, active & smooth)
         bs.pdf = dr.select(smooth, pdf, bs.pdf)
-        weight = dr.select(smooth, dr.select(pdf > 0, f / pdf, 0), weight)
+        # The division is by 1 where pdf is 0: scalar_rgb evaluates both sides of a select.
+        weight = dr.select(smooth, dr.select(pdf > 0, f / dr.select(pdf > 0, pdf, 1.0), 0), weight)
         return bs, weight
 
     def eval(self, ctx, si, wo, active=True):
@@ -159,6 +160,14 @@ mi.register_bsdf("tracer_mixture", lambda props: TracerMixture(props))
 
 def rgb(r, g, b):
     return {"type": "rgb", "value": [r, g, b]}
+
+
+def reflectance(r, g, b):
+    """A lobe's weight: above 1 (diffuse 1.5, or a clear surface's weights divided by 1 - t) as
+    an unbounded sRGB value, which Mitsuba refuses as plain "rgb" where a reflectance goes."""
+    if max(r, g, b) > 1:
+        return {"type": "srgb", "color": [r, g, b], "unbounded": True}
+    return rgb(r, g, b)
 
 
 def mixture(*lobes):

@@ -83,6 +83,12 @@ object Mitsuba:
 
   private def vec(v: Vec3): Py   = List(Vector(Num(v.x), Num(v.y), Num(v.z)))
   private def rgb(c: Colour): Py = Call("rgb", Vector(Num(c.r), Num(c.g), Num(c.b)))
+
+  /** A lobe's weight as the twin's `reflectance`, which may exceed 1 (Mitsuba refuses a plain
+    * `rgb` above 1 where a reflectance goes).
+    */
+  private def reflectance(c: Colour): Py =
+    Call("reflectance", Vector(Num(c.r), Num(c.g), Num(c.b)))
   private def typed(name: String, entries: (String, Py)*): Py =
     Dict(("type" -> Str(name)) +: entries.toVector)
 
@@ -339,7 +345,7 @@ object Mitsuba:
           "distribution"         -> Str("ggx"),
           "alpha"                -> Num(alpha),
           "material"             -> Str("none"),
-          "specular_reflectance" -> rgb(Colour.grey(weight * scale))
+          "specular_reflectance" -> reflectance(Colour.grey(weight * scale))
         )
       )
     )
@@ -348,7 +354,7 @@ object Mitsuba:
       Option.when(diffuse.max > 0)(
         Lobe(
           (diffuse.r + diffuse.g + diffuse.b) / 3,
-          sided(typed("diffuse", "reflectance" -> rgb(diffuse)))
+          sided(typed("diffuse", "reflectance" -> reflectance(diffuse)))
         )
       ),
       Option.when(s.reflection > 0)(
@@ -358,7 +364,7 @@ object Mitsuba:
             typed(
               "conductor",
               "material"             -> Str("none"),
-              "specular_reflectance" -> rgb(Colour.grey(s.reflection * scale))
+              "specular_reflectance" -> reflectance(Colour.grey(s.reflection * scale))
             )
           )
         )
@@ -372,14 +378,14 @@ object Mitsuba:
             "dielectric",
             "int_ior"                -> Num(s.ior),
             "ext_ior"                -> Num(1),
-            "specular_reflectance"   -> rgb(Colour.grey(s.transmit)),
-            "specular_transmittance" -> rgb(Colour.grey(s.transmit))
+            "specular_reflectance"   -> reflectance(Colour.grey(s.transmit)),
+            "specular_transmittance" -> reflectance(Colour.grey(s.transmit))
           )
         )
       )
     ).flatten
     val mixed = lobes match
-      case Vector()     => sided(typed("diffuse", "reflectance" -> rgb(Colour.Black)))
+      case Vector()     => sided(typed("diffuse", "reflectance" -> reflectance(Colour.Black)))
       case Vector(only) => only.bsdf
       case many         => Call("mixture", many.map(l => List(Vector(Num(l.weight), l.bsdf))))
     if !clear then mixed

@@ -334,6 +334,26 @@ class MitsubaSuite extends munit.FunSuite:
   test("a mirror, Phong and Blinn highlights (both GGX lobes) under a sky match Mitsuba's at -r 4"):
     pathAgrees("glossy", glossy, Mitsuba.Settings(48, 36, 512, 4))
 
+  /** Lobe weights above 1, which the scene format allows: a white ball of diffuse 1.5 and a
+    * clear ball whose mirror weight over 1 − t is 1.2, under a sky (`-r 3`). Mitsuba refuses a
+    * plain `rgb` reflectance above 1; the twin writes them unbounded.
+    */
+  private val bright = Scene(
+    camera = camera,
+    background = Colour(0.5, 0.55, 0.6),
+    objects = Seq(
+      floor,
+      SceneObject(Sphere(Vec3(-0.8, 0.6, 0.3), 0.6), Surface(diffuse = 1.5)),
+      SceneObject(
+        Sphere(Vec3(0.8, 0.6, 0.3), 0.6),
+        Surface(diffuse = 0.5, reflection = 0.6, transmit = 0.5)
+      )
+    )
+  )
+
+  test("lobe weights above 1 (diffuse 1.5, a clear surface's mirror) match Mitsuba's at -r 3"):
+    pathAgrees("bright", bright, Mitsuba.Settings(48, 36, 512, 3))
+
   /** Glass and a clear pane lit by a glowing ball and a glowing panel of triangles (`-r 6`). */
   private val glass = Scene(
     camera = camera,
