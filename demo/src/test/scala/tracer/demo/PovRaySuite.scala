@@ -95,7 +95,12 @@ class PovRaySuite extends munit.FunSuite:
     val scene = SceneXml.load(dir.resolve("scene.xml"), dir).fold(fail(_), identity)
     val depth = options.sliding(2).collectFirst { case List("-r", d) => d.toInt }
     val twin  =
-      PovRay.write(scene, depth.getOrElse(5), quick = options.contains("-q"), pixels = Some((160, 90)))
+      PovRay.write(
+        scene,
+        depth.getOrElse(5),
+        quick = options.contains("-q"),
+        pixels = Some((160, 90))
+      )
     (ours(dir, options), theirs(twin, dir, gamma))
 
   /** The version 3 criterion, against what was measured on this scene: PSNR at least 3 dB below
