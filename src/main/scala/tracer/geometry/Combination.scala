@@ -17,7 +17,7 @@ private[geometry] object Combination:
         .map(c =>
           // A subtracted child's outside is the inside of the whole: its normals turn round.
           val outward =
-            if csg.operation == CsgOperation.Difference && i > 0 then -c.normal else c.normal
+            if inverts(csg, i) then -c.normal else c.normal
           Crossing(c.t, outward, c.leaf + csg.firstLeaves(i))
         )
     }

@@ -39,7 +39,7 @@ private[geometry] object CsgKernel:
       var i    = 0
       while i < c.parts.length do
         if met(c, mask, i, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity) then
-          val flip = c.operation == CsgOperation.Difference && i > 0
+          val flip = Combination.inverts(c, i)
           val end  =
             Kernel.collect(
               c.parts(i),
@@ -125,7 +125,7 @@ private[geometry] object CsgKernel:
             if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inverted = false) then
               best = t
               buffer.move(k, from)
-              if c.operation == CsgOperation.Difference && i > 0 then
+              if Combination.inverts(c, i) then
                 buffer.nx(from) = -buffer.nx(from)
                 buffer.ny(from) = -buffer.ny(from)
                 buffer.nz(from) = -buffer.nz(from)
@@ -207,13 +207,7 @@ private[geometry] object CsgKernel:
     // Perf: `forall` over the children as loops on their array (SolidsBench).
     if inverted then
       // An inverted union keeps a crossing outside every other child; the others keep them all.
-      c.operation != CsgOperation.Union || {
-        var j = 0
-        while j < c.parts.length &&
-          (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(c.parts(j), px, py, pz))
-        do j += 1
-        j == c.parts.length
-      }
+      c.operation != CsgOperation.Union || outsideOthers(c, i, mask, 0, px, py, pz)
     else
       c.operation match
         case CsgOperation.Union        => true
@@ -224,18 +218,27 @@ private[geometry] object CsgKernel:
           j == c.parts.length
         case CsgOperation.Difference =>
           // Inside the first child and outside every later one, child i aside.
-          (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) && {
-            var j = 1
-            while j < c.parts.length &&
-              (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(
-                c.parts(j),
-                px,
-                py,
-                pz
-              ))
-            do j += 1
-            j == c.parts.length
-          }
+          (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) &&
+          outsideOthers(c, i, mask, 1, px, py, pz)
+
+  /** True when p lies outside every child from `from` on but child `i`; a child whose bit in
+    * `mask` is clear does not contain p, so it is not tested.
+    */
+  private def outsideOthers(
+      c: Csg,
+      i: Int,
+      mask: Long,
+      from: Int,
+      px: Double,
+      py: Double,
+      pz: Double
+  ): Boolean =
+    // Why: a plain loop over the children's array (SolidsBench).
+    var j = from
+    while j < c.parts.length &&
+      (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(c.parts(j), px, py, pz))
+    do j += 1
+    j == c.parts.length
 
   /** The distance at which the ray (origin o, inverse direction i) enters the box of six doubles
     * at `b` of `boxes`, or +∞ when it misses it at 0 ≤ t ≤ `limit` (Bvh.entry's slab test).
