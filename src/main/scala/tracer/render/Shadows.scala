@@ -115,13 +115,8 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
         val positions = world.subLights(k)
         val beside    = Shadows.anyBehind(positions, fx, fy, fz, nx, ny, nz)
         // A beam holds the rays from S0 alone: when a sub-light is sought from beyond the face,
-        // the rays walk the tree.
+        // the rays walk the tree. (With none behind, `sample` seeks each from S0.)
         if beam.length > 0 && !beside then aim(fx, fy, fz, positions, area)
-        // Why n = 0 when no sub-light is behind: each is then sought from S0 (no tuple: a shading
-        // point's hot path).
-        val sx    = if beside then nx else 0.0
-        val sy    = if beside then ny else 0.0
-        val sz    = if beside then nz else 0.0
         val share =
           cell(
             fx,
@@ -130,9 +125,9 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
             px,
             py,
             pz,
-            sx,
-            sy,
-            sz,
+            nx,
+            ny,
+            nz,
             positions,
             area,
             0,
@@ -785,13 +780,13 @@ final class Shadows(world: World, query: Query, beams: Boolean = true):
     if !world.hasLeafSurfaces(i) then 0
     else Shape.hitAt(world.shape(i), Ray(Vec3(ox, oy, oz), Vec3(dx, dy, dz)), t).leaf
 
-/** The margin of [[Shadows]]' beams. */
+/** The margin of [[Shadows]]' beams, and which sub-lights lie behind a face. */
 object Shadows:
   /** True when some sub-light at `positions` (x, y, z at 3k) lies behind the plane through
     * (fx, fy, fz) of normal n (n · (sub-light − f) < 0, as [[Shading.sideToward]] weighs it);
     * false for n = 0.
     */
-  def anyBehind(
+  private[render] def anyBehind(
       positions: IArray[Double],
       fx: Double,
       fy: Double,
