@@ -206,6 +206,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a union that cuts cuts with its outer surface only, as POV-Ray's inverted union"):
     version3("cutter-union", psnr = 80.17, off = 0)
 
+  test("a shadow through a clear child of a combination is dimmed at each of its faces"):
+    version3("clear-child", psnr = 58.85, off = 0.035)
+
   test("a camera of another shape than the picture's is drawn with the tracer's W and H"):
     version3("aspect", psnr = 55.72, off = 0.049)
 
