@@ -28,7 +28,19 @@ private[geometry] object Combination:
     case CsgOperation.Union        => csg.children.exists(Shape.inside(_, p))
     case CsgOperation.Intersection => csg.children.forall(Shape.inside(_, p))
     case CsgOperation.Difference   =>
-      Shape.inside(csg.children.head, p) && !csg.children.tail.exists(Shape.inside(_, p))
+      Shape.inside(csg.children.head, p) && csg.children.tail.forall(Shape.insideComplement(_, p))
+
+  /** True when `p` is inside the complement of `csg` as POV-Ray builds it (`CSGUnion::Invert` and
+    * the others, by De Morgan's rules): a union's is the intersection of its children's
+    * complements, an intersection's the union of theirs, a difference's the union of its first
+    * child's complement and its later children. For solids alone that is "not inside"; a
+    * triangle or mesh has an empty complement ([[Shape.insideComplement]]).
+    */
+  def insideComplement(csg: Csg, p: tracer.math.Vec3): Boolean = csg.operation match
+    case CsgOperation.Union        => csg.children.forall(Shape.insideComplement(_, p))
+    case CsgOperation.Intersection => csg.children.exists(Shape.insideComplement(_, p))
+    case CsgOperation.Difference   =>
+      Shape.insideComplement(csg.children.head, p) || csg.children.tail.exists(Shape.inside(_, p))
 
   /** True when child `i` of `csg` enters it as its complement: a later child of a difference
     * (POV-Ray's difference is the intersection of the first child with the others inverted).
@@ -38,17 +50,20 @@ private[geometry] object Combination:
   /** True when a crossing of child `i` at `p` is on the surface of the whole, or with `inverted`
     * of its complement as POV-Ray inverts it (`CSGUnion::Invert` and the others, by De Morgan):
     * an inverted union is the intersection of its inverted children, keeping a child's crossing
-    * only where the point is outside every other child (so the inner surfaces of a union used to
-    * cut are not cut faces); an inverted intersection or difference is a union, keeping all.
+    * only where the point is inside every other child's complement (so the inner surfaces of a
+    * union used to cut are not cut faces); an inverted intersection or difference is a union,
+    * keeping all. A difference keeps a crossing inside its first child and inside the complement
+    * of each later one ([[insideComplement]]).
     */
   private def keeps(csg: Csg, i: Int, p: tracer.math.Vec3, inverted: Boolean): Boolean =
     csg.operation match
       case CsgOperation.Union =>
-        !inverted || csg.children.indices.forall(j => j == i || !Shape.inside(csg.children(j), p))
+        !inverted ||
+        csg.children.indices.forall(j => j == i || Shape.insideComplement(csg.children(j), p))
       case CsgOperation.Intersection =>
         inverted || csg.children.indices.forall(j => j == i || Shape.inside(csg.children(j), p))
       case CsgOperation.Difference =>
         inverted || csg.children.indices.forall { j =>
           j == i || (if j == 0 then Shape.inside(csg.children(j), p)
-                     else !Shape.inside(csg.children(j), p))
+                     else Shape.insideComplement(csg.children(j), p))
         }

@@ -206,7 +206,8 @@ private[geometry] object CsgKernel:
   ): Boolean =
     // Perf: `forall` over the children as loops on their array (SolidsBench).
     if inverted then
-      // An inverted union keeps a crossing outside every other child; the others keep them all.
+      // An inverted union keeps a crossing inside every other child's complement; the others keep
+      // them all.
       c.operation != CsgOperation.Union || outsideOthers(c, i, mask, 0, px, py, pz)
     else
       c.operation match
@@ -217,12 +218,13 @@ private[geometry] object CsgKernel:
           while j < c.parts.length && (j == i || Kernel.inside(c.parts(j), px, py, pz)) do j += 1
           j == c.parts.length
         case CsgOperation.Difference =>
-          // Inside the first child and outside every later one, child i aside.
+          // Inside the first child and the complement of every later one, child i aside.
           (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) &&
           outsideOthers(c, i, mask, 1, px, py, pz)
 
-  /** True when p lies outside every child from `from` on but child `i`; a child whose bit in
-    * `mask` is clear does not contain p, so it is not tested.
+  /** True when p lies inside the complement of every child from `from` on but child `i`
+    * (outside it, for a child without triangles: [[Shape.insideComplement]]); a child whose bit
+    * in `mask` is clear does not contain p, so unless it holds a triangle it is not tested.
     */
   private def outsideOthers(
       c: Csg,
@@ -236,7 +238,8 @@ private[geometry] object CsgKernel:
     // Why: a plain loop over the children's array (SolidsBench).
     var j = from
     while j < c.parts.length &&
-      (j == i || j < 64 && (mask & (1L << j)) == 0 || !Kernel.inside(c.parts(j), px, py, pz))
+      (j == i || j < 64 && ((mask | c.patchParts) & (1L << j)) == 0 ||
+        Kernel.insideComplement(c.parts(j), px, py, pz))
     do j += 1
     j == c.parts.length
 

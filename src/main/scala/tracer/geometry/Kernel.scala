@@ -274,7 +274,9 @@ object Kernel:
       if t < Double.PositiveInfinity then
         buffer.put(from, t, tr.normal.x, tr.normal.y, tr.normal.z, 0); from + 1
       else from
-    case m: Mesh =>
+    // As Shape.crossings: the complement of a mesh of many faces has no surface.
+    case m: Mesh if inverted && m.faceCount > 1 => from
+    case m: Mesh                                =>
       // Perf: each face's crossing on the mesh's arrays, its leaf the face, sorted stably by t.
       var end = from
       var f   = 0
@@ -411,9 +413,41 @@ object Kernel:
         case CsgOperation.Difference =>
           inside(parts(0), px, py, pz) && {
             var i = 1
-            while i < parts.length && !inside(parts(i), px, py, pz) do i += 1
+            while i < parts.length && insideComplement(parts(i), px, py, pz) do i += 1
             i == parts.length
           }
+
+  /** [[Shape.insideComplement]] on the point (px, py, pz): as [[inside]], negated for a solid. */
+  def insideComplement(shape: Shape, px: Double, py: Double, pz: Double): Boolean = shape match
+    case _: (Triangle | Mesh) => false
+    case p: Placed            =>
+      val m  = p.back
+      val qx = px - m(9); val qy = py - m(10); val qz = pz - m(11)
+      insideComplement(
+        p.shape,
+        m(0) * qx + m(1) * qy + m(2) * qz,
+        m(3) * qx + m(4) * qy + m(5) * qz,
+        m(6) * qx + m(7) * qy + m(8) * qz
+      )
+    case c: Csg =>
+      // Perf: Combination.insideComplement as loops over the children's array.
+      val parts = c.parts
+      c.operation match
+        case CsgOperation.Union =>
+          var i = 0
+          while i < parts.length && insideComplement(parts(i), px, py, pz) do i += 1
+          i == parts.length
+        case CsgOperation.Intersection =>
+          var i = 0
+          while i < parts.length && !insideComplement(parts(i), px, py, pz) do i += 1
+          i < parts.length
+        case CsgOperation.Difference =>
+          insideComplement(parts(0), px, py, pz) || {
+            var i = 1
+            while i < parts.length && !inside(parts(i), px, py, pz) do i += 1
+            i < parts.length
+          }
+    case _: (Sphere | Plane | Box | Cone | Torus) => !inside(shape, px, py, pz)
 
   /** A sphere's crossing at t if t > 0, with the reference's normal (ri − Sc)·(1/Sr). */
   private def sphereCrossing(

@@ -536,6 +536,14 @@ final case class Csg(operation: CsgOperation, children: Vector[Shape]) extends S
     */
   private[geometry] val partBoxes: Array[Double] = CsgKernel.paddedBoxes(parts)
 
+  /** Bit j set when child j (of the first 64) holds a triangle or mesh, whose complement the
+    * kernel tests even where a ray misses its box ([[Shape.holdsPatch]]).
+    */
+  private[geometry] val patchParts: Long =
+    parts.indices
+      .take(64)
+      .foldLeft(0L)((m, j) => if Shape.holdsPatch(parts(j)) then m | 1L << j else m)
+
 /** The total functions on shapes: intersection distance, hit details and texture coordinates. */
 object Shape:
 
@@ -610,8 +618,9 @@ object Shape:
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector. With
     * `inverted`, the crossings of the shape's complement as POV-Ray makes it for a later child of
-    * a difference: the same for a primitive, De Morgan's dual rules for a combination
-    * ([[Combination.crossings]]).
+    * a difference: the same for a primitive, none for a mesh of more than one face (a union of
+    * triangles, each of whose complements is empty: [[insideComplement]]), De Morgan's dual rules
+    * for a combination ([[Combination.crossings]]).
     */
   def crossings(shape: Shape, ray: Ray, inverted: Boolean = false): List[Crossing] = shape match
     case s: Sphere =>
@@ -630,7 +639,11 @@ object Shape:
     case tr: Triangle =>
       val t = triangleDistance(tr, ray)
       if t < Miss then List(Crossing(t, tr.normal, 0)) else Nil
-    case m: Mesh =>
+    // The complement of a mesh of many faces has no surface: each face's crossing would have to
+    // lie inside the others' complements, which are empty (its POV-Ray twin is a union of its
+    // triangles, and POV-Ray inverts a union into the intersection of its children's complements).
+    case m: Mesh if inverted && m.faceCount > 1 => Nil
+    case m: Mesh                                =>
       (0 until m.faceCount).toList
         .flatMap(f => crossings(m.face(f), ray).map(_.copy(leaf = f)))
         .sortBy(_.t)
@@ -657,6 +670,28 @@ object Shape:
     case t: Torus    => Solids.insideTorus(t, point)
     case p: Placed   => inside(p.shape, p.transform.pointBack(point))
     case c: Csg      => Combination.inside(c, point)
+
+  /** True when `point` is inside the complement of `shape` as POV-Ray inverts a later child of a
+    * difference: outside it, for a solid; a triangle or mesh, which has no inside, has no inside
+    * when inverted either (POV-Ray's patch objects), and a combination's complement follows De
+    * Morgan's rules over its children's ([[Combination.insideComplement]]). So a complement
+    * holding a triangle is not the outside of the shape: the complement of a union holding one
+    * is empty.
+    */
+  def insideComplement(shape: Shape, point: Vec3): Boolean = shape match
+    case _: (Triangle | Mesh) => false
+    case p: Placed            => insideComplement(p.shape, p.transform.pointBack(point))
+    case c: Csg               => Combination.insideComplement(c, point)
+    case _: (Sphere | Plane | Box | Cone | Torus) => !inside(shape, point)
+
+  /** True when some leaf of `shape` is a triangle or a mesh: then its complement's inside is not
+    * its outside ([[insideComplement]]).
+    */
+  def holdsPatch(shape: Shape): Boolean = shape match
+    case _: (Triangle | Mesh)                     => true
+    case p: Placed                                => holdsPatch(p.shape)
+    case c: Csg                                   => c.children.exists(holdsPatch)
+    case _: (Sphere | Plane | Box | Cone | Torus) => false
 
   /** The number of primitives in `shape`: 1, for a mesh its faces, for a combination the sum over
     * its children.

@@ -46,11 +46,14 @@ class KernelProperties extends ScalaCheckSuite:
   private val primitive: Gen[Shape] = Gen.oneOf(sphere, box, cone, torus)
   private val placed: Gen[Shape]    = for s <- primitive; p <- placement yield Placed(s, p)
   private val operation             = Gen.oneOf(CsgOperation.values.toIndexedSeq)
-  private val csg: Gen[Shape]       =
+  private val meshUnion: Gen[Shape] =
+    Gen.listOfN(4, Gen.oneOf(triangle, sphere)).map(ts => Csg(CsgOperation.Union, ts.toVector))
+  // A union holding triangles may cut too: its complement is not its outside (Shape.holdsPatch).
+  private val csg: Gen[Shape] =
     for
       op       <- operation
       n        <- Gen.choose(1, 3)
-      children <- Gen.listOfN(n, Gen.oneOf(primitive, placed))
+      children <- Gen.listOfN(n, Gen.frequency(3 -> primitive, 3 -> placed, 1 -> meshUnion))
       nested   <- Gen.oneOf(true, false)
       inner    <- operation
       moved    <- Gen.option(placement)
@@ -60,8 +63,6 @@ class KernelProperties extends ScalaCheckSuite:
         if nested && kids.size >= 2 then Csg(op, Csg(inner, kids.take(2)) +: kids.drop(2))
         else Csg(op, kids)
       moved.fold(tree: Shape)(Placed(tree, _))
-  private val meshUnion: Gen[Shape] =
-    Gen.listOfN(4, Gen.oneOf(triangle, sphere)).map(ts => Csg(CsgOperation.Union, ts.toVector))
   private val shape: Gen[Shape] =
     Gen.frequency(
       2 -> primitive,

@@ -221,6 +221,40 @@ class SolidsSuite extends munit.FunSuite:
     // The solids themselves are unchanged: inside the box and outside the union.
     assert(Shape.inside(cut, Vec3(1.5, 0.5, 1.5)) && !Shape.inside(cut, Vec3(0.5, 0.5, 0)))
 
+  test("a union holding a triangle or a mesh cuts as POV-Ray's patch objects do"):
+    // POV-Ray's triangle has no inside, inverted or not, so the complement of a union holding one
+    // (the intersection of its children's complements) is empty: the box's faces all vanish, and
+    // of the cutter only the part of the triangle inside the box and outside the ball is left.
+    val box   = Box(Vec3(-2, -2, -2), Vec3(2, 2, 2))
+    val ball  = Sphere(Vec3.Zero, 1)
+    val sheet = Triangle(Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0))
+    val cut   =
+      Csg(CsgOperation.Difference, Vector(box, Csg(CsgOperation.Union, Vector(ball, sheet))))
+    val beside  = ray(Vec3(1.5, 0.5, -5), Vec3.UnitZ)
+    val through = ray(Vec3(0, 0, -5), Vec3.UnitZ)
+    assertEquals(Shape.crossings(cut, beside).map(_.t), List(5.0)) // the sheet, not the box at 3
+    assertEquals(Shape.crossings(cut, through), Nil) // the sheet inside the ball is cut too
+    assert(!Shape.inside(cut, Vec3(1.5, 1.5, 1.5)), "inside an empty complement")
+    // A mesh of two faces is, in the twin, a union of two triangles: inverted, each face's
+    // crossing would lie inside the other's empty complement, so nothing is left.
+    val square = Mesh(
+      IArray(-10.0, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0),
+      IArray(0, 1, 2, 0, 2, 3)
+    )
+    val meshCut =
+      Csg(CsgOperation.Difference, Vector(box, Csg(CsgOperation.Union, Vector(ball, square))))
+    assertEquals(Shape.crossings(meshCut, beside), Nil)
+    // The kernel agrees, and with a solid cutter alone the complement is still the outside.
+    val b = CrossingBuffer()
+    assertEquals(Kernel.collect(cut, 1.5, 0.5, -5, 0, 0, 1, b, 0), 1)
+    assertEquals(b.t(0), 5.0)
+    assertEquals(Kernel.collect(cut, 0, 0, -5, 0, 0, 1, b, 0), 0)
+    assertEquals(Kernel.collect(meshCut, 1.5, 0.5, -5, 0, 0, 1, b, 0), 0)
+    assert(!Kernel.inside(cut, 1.5, 1.5, 1.5))
+    val solid = Csg(CsgOperation.Difference, Vector(box, Csg(CsgOperation.Union, Vector(ball))))
+    assertEquals(Shape.crossings(solid, through).map(_.t), List(3.0, 4.0, 6.0, 7.0))
+    assert(Shape.inside(solid, Vec3(1.5, 1.5, 1.5)) && Kernel.inside(solid, 1.5, 1.5, 1.5))
+
   test("Polynomial.roots finds every real root of a quartic in an interval, in order"):
     // (x − 1)(x − 2)(x − 3)(x − 4) = x⁴ − 10x³ + 35x² − 50x + 24
     val c     = IArray(24.0, -50.0, 35.0, -10.0, 1.0)

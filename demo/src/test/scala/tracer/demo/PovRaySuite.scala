@@ -206,6 +206,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a union that cuts cuts with its outer surface only, as POV-Ray's inverted union"):
     version3("cutter-union", psnr = 80.17, off = 0)
 
+  test("a union holding a triangle or a mesh cuts as POV-Ray's patch objects do"):
+    version3("patch-cutter", psnr = 86.03, off = 0)
+
   test("a shadow through a clear child of a combination is dimmed at each of its faces"):
     version3("clear-child", psnr = 58.85, off = 0.035)
 

@@ -14,9 +14,8 @@ import tracer.math.Vec3
   * every finish: diffuse, reflection, Phong, Blinn, transmit with or without an index of
   * refraction, checkers. Each scene comes with the recursion depth it is to be rendered at.
   *
-  * The scenes stay inside what both renderers mean alike: triangles and meshes join only unions
-  * at the top of the scene (a union holding one, used to cut, is the documented departure of
-  * docs/rendering.md); image textures are left out (the POV-Ray twin carries none).
+  * Image textures are left out (the POV-Ray twin carries none); triangles and meshes join unions
+  * only (they have no inside), at any depth, so some cut.
   */
 object RandomScenes:
 
@@ -279,7 +278,7 @@ object RandomScenes:
       s"<triangle>$body$surf</triangle>"
 
   /** A combination `depth` deep (0 at the scene's top): two or three children, each a solid, a
-    * plane, a nested combination (up to two deep) or, in a union at the top, a triangle or mesh.
+    * plane, a nested combination (up to two deep) or, in a union, a triangle or mesh.
     */
   private def combination(depth: Int): Gen[String] =
     for
@@ -300,7 +299,7 @@ object RandomScenes:
       .flatMap(r =>
         if depth < 2 && r < 0.2 then combination(depth + 1)
         else if r < 0.28 then solid("plane", top = false, inCsg = true)
-        else if operation == "union" && depth == 0 && r < 0.38 then
+        else if operation == "union" && r < 0.38 then
           Gen.oneOf(triangle(inCsg = true), mesh(inCsg = true))
         else Gen.oneOf(solids).flatMap(solid(_, top = false, inCsg = true))
       )
