@@ -10,10 +10,10 @@ package tracer.geometry
 private[geometry] object CsgKernel:
 
   /** Combination.crossings: each child's crossings kept where the others' inside tests say the
-    * point is on the whole's surface (with `inverted`, its complement's), normals of subtracted
-    * children turned round, leaves renumbered, all sorted by t (stably, children in order). A
-    * child whose box the ray misses has no crossings and contains none of the others' ([[reach]]),
-    * so it is skipped.
+    * point is on the whole's surface (the whole counted `inversions` times inverted:
+    * [[Combination.rule]]), normals of subtracted children turned round, leaves renumbered, all
+    * sorted by t (stably, children in order). A child whose box the ray misses has no crossings
+    * and contains none of the others' ([[reach]]), so it is skipped.
     */
   private[geometry] def combination(
       c: Csg,
@@ -26,13 +26,13 @@ private[geometry] object CsgKernel:
       buffer: CrossingBuffer,
       from: Int,
       normals: Boolean,
-      inverted: Boolean = false
+      inversions: Int = Combination.Plain
   ): Int =
     val ix   = 1 / dx
     val iy   = 1 / dy
     val iz   = 1 / dz
     val mask = reach(c, ox, oy, oz, ix, iy, iz, Double.PositiveInfinity)
-    if !whole(c, mask, inverted) then from
+    if !whole(c, mask, inversions) then from
     else
       // Perf: the children's crossings are written after the kept ones and compacted in place.
       var kept = from
@@ -52,13 +52,13 @@ private[geometry] object CsgKernel:
               buffer,
               kept,
               normals,
-              inverted != flip
+              Combination.childInversions(c, i, inversions)
             )
           val first = c.partLeaves(i)
           var k     = kept
           while k < end do
             val t = buffer.t(k)
-            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inverted) then
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inversions) then
               if k != kept then buffer.move(k, kept)
               if flip then
                 buffer.nx(kept) = -buffer.nx(kept)
@@ -96,7 +96,7 @@ private[geometry] object CsgKernel:
     val iy   = 1 / dy
     val iz   = 1 / dz
     val mask = reach(c, ox, oy, oz, ix, iy, iz, limit)
-    if !whole(c, mask, inverted = false) then from
+    if !whole(c, mask, Combination.Plain) then from
     else
       // Perf: the best crossing so far at `from`, each child's crossings after it (SolidsBench).
       var best = Double.PositiveInfinity
@@ -117,12 +117,12 @@ private[geometry] object CsgKernel:
             buffer,
             from + 1,
             normals,
-            Combination.inverts(c, i)
+            Combination.childInversions(c, i, Combination.Plain)
           )
           var k = from + 1
           while k < end && buffer.t(k) < best && buffer.t(k) <= limit do
             val t = buffer.t(k)
-            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, inverted = false) then
+            if keeps(c, i, mask, ox + dx * t, oy + dy * t, oz + dz * t, Combination.Plain) then
               best = t
               buffer.move(k, from)
               if Combination.inverts(c, i) then
@@ -163,12 +163,13 @@ private[geometry] object CsgKernel:
       j += 1
     mask
 
-  /** True when the ray may cross the whole: every child of an intersection met, the first child
-    * of a difference met (a union, or any complement, which keeps crossings of every child met:
-    * always).
+  /** True when the ray may cross the whole (counted `k` times inverted): always, unless it keeps
+    * a child's crossings only inside every other child ([[Combination.rule]]) and a child whose
+    * own points count there (every child of an intersection, the first of a difference, none of
+    * an inverted union's) is missed.
     */
-  private inline def whole(c: Csg, mask: Long, inverted: Boolean): Boolean =
-    inverted || (c.operation match
+  private inline def whole(c: Csg, mask: Long, k: Int): Boolean =
+    Combination.rule(c, k) != Combination.KeepInsideOthers || (c.operation match
       case CsgOperation.Union        => true
       case CsgOperation.Intersection => mask == -1L
       case CsgOperation.Difference   => (mask & 1L) != 0)
@@ -192,8 +193,8 @@ private[geometry] object CsgKernel:
       (i < 64 && limit == Double.PositiveInfinity ||
         boxEntry(c.partBoxes, 6 * i, ox, oy, oz, ix, iy, iz, limit) < Double.PositiveInfinity)
 
-  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole (with
-    * `inverted`, of its complement); a child whose bit in `mask` is clear does not contain p.
+  /** Combination.keeps: a crossing of child `i` at p is on the surface of the whole, counted `k`
+    * times inverted; a child whose bit in `mask` is clear does not contain p.
     */
   private def keeps(
       c: Csg,
@@ -202,44 +203,38 @@ private[geometry] object CsgKernel:
       px: Double,
       py: Double,
       pz: Double,
-      inverted: Boolean
+      k: Int
   ): Boolean =
-    // Perf: `forall` over the children as loops on their array (SolidsBench).
-    if inverted then
-      // An inverted union keeps a crossing inside every other child's complement; the others keep
-      // them all.
-      c.operation != CsgOperation.Union || outsideOthers(c, i, mask, 0, px, py, pz)
-    else
-      c.operation match
-        case CsgOperation.Union        => true
-        case CsgOperation.Intersection =>
-          // A clear bit makes the whole a miss ([[whole]]), so every child is tested here.
-          var j = 0
-          while j < c.parts.length && (j == i || Kernel.inside(c.parts(j), px, py, pz)) do j += 1
-          j == c.parts.length
-        case CsgOperation.Difference =>
-          // Inside the first child and the complement of every later one, child i aside.
-          (i == 0 || Kernel.inside(c.parts(0), px, py, pz)) &&
-          outsideOthers(c, i, mask, 1, px, py, pz)
+    val rule = Combination.rule(c, k)
+    rule == Combination.KeepAll ||
+    others(c, i, mask, px, py, pz, k, inside = rule == Combination.KeepInsideOthers)
 
-  /** True when p lies inside the complement of every child from `from` on but child `i`
-    * (outside it, for a child without triangles: [[Shape.insideComplement]]); a child whose bit
-    * in `mask` is clear does not contain p, so unless it holds a triangle it is not tested.
+  /** True when p's inside test of every child but `i` is `inside`, each child counted as
+    * [[Combination.childInversions]] says (its complement's test when that is odd). A child whose
+    * bit in `mask` is clear does not contain p: unless it holds a triangle, p is then inside its
+    * complement only, and it is not tested.
     */
-  private def outsideOthers(
+  private def others(
       c: Csg,
       i: Int,
       mask: Long,
-      from: Int,
       px: Double,
       py: Double,
-      pz: Double
+      pz: Double,
+      k: Int,
+      inside: Boolean
   ): Boolean =
     // Why: a plain loop over the children's array (SolidsBench).
-    var j = from
-    while j < c.parts.length &&
-      (j == i || j < 64 && ((mask | c.patchParts) & (1L << j)) == 0 ||
-        Kernel.insideComplement(c.parts(j), px, py, pz))
+    val oddWhole = k == Combination.Inverted
+    var j        = 0
+    while j < c.parts.length && (j == i || {
+        val odd = Combination.inverts(c, j) != oddWhole
+        val in  =
+          if j < 64 && ((mask | c.patchParts) & (1L << j)) == 0 then odd
+          else if odd then Kernel.insideComplement(c.parts(j), px, py, pz)
+          else Kernel.inside(c.parts(j), px, py, pz)
+        in == inside
+      })
     do j += 1
     j == c.parts.length
 

@@ -237,8 +237,9 @@ object Kernel:
   /** [[Shape.crossings]] of `shape` written into `buffer` from index `from`, in increasing t;
     * returns the index after the last. The same crossings bit for bit as the reference's list;
     * with `normals` false their normals are left unset (Perf: a distance needs only the ts, and
-    * the cone's, torus's and placement's normals cost a square root each); with `inverted`, the
-    * crossings of the shape's complement (a later child of a difference: [[Shape.crossings]]).
+    * the cone's, torus's and placement's normals cost a square root each); `inversions` counts
+    * how often POV-Ray has inverted the shape ([[Combination.Plain]] and the others, as
+    * [[Shape.crossings]] takes them).
     */
   def collect(
       shape: Shape,
@@ -251,7 +252,7 @@ object Kernel:
       buffer: CrossingBuffer,
       from: Int,
       normals: Boolean = true,
-      inverted: Boolean = false
+      inversions: Int = Combination.Plain
   ): Int = shape match
     case s: Sphere =>
       val ocx  = s.centre.x - ox
@@ -275,8 +276,8 @@ object Kernel:
         buffer.put(from, t, tr.normal.x, tr.normal.y, tr.normal.z, 0); from + 1
       else from
     // As Shape.crossings: the complement of a mesh of many faces has no surface.
-    case m: Mesh if inverted && m.faceCount > 1 => from
-    case m: Mesh                                =>
+    case m: Mesh if inversions == Combination.Inverted && m.faceCount > 1 => from
+    case m: Mesh                                                          =>
       // Perf: each face's crossing on the mesh's arrays, its leaf the face, sorted stably by t.
       var end = from
       var f   = 0
@@ -294,11 +295,12 @@ object Kernel:
     case t: Torus  => TorusKernel.torus(t, ox, oy, oz, dx, dy, dz, buffer, from, normals)
     case p: Placed =>
       ownSpace(p, ox, oy, oz, dx, dy, dz) { (lox, loy, loz, ldx, ldy, ldz, s) =>
-        val end = collect(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from, normals, inverted)
+        val end =
+          collect(p.shape, lox, loy, loz, ldx, ldy, ldz, buffer, from, normals, inversions)
         broughtBack(p.back, s, buffer, from, end, normals)
       }
     case c: Csg =>
-      CsgKernel.combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals, inverted)
+      CsgKernel.combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals, inversions)
 
   /** Runs `body` on the ray taken into `p`'s own space (Shape.ownSpace on doubles): its origin,
     * its unit direction and the stretch s by which its distances are longer there.

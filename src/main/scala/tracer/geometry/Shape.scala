@@ -617,12 +617,13 @@ object Shape:
 
   /** Every crossing of `ray` with the surface of `shape` at t > 0, in increasing t: what
     * constructive solid geometry combines. `ray.direction` must be a unit vector. With
-    * `inverted`, the crossings of the shape's complement as POV-Ray makes it for a later child of
-    * a difference: the same for a primitive, none for a mesh of more than one face (a union of
-    * triangles, each of whose complements is empty: [[insideComplement]]), De Morgan's dual rules
-    * for a combination ([[Combination.crossings]]).
+    * `inversions` (0, the default: none; 1 an odd number; 2 an even number, at least two), the
+    * crossings of the shape as POV-Ray rebuilds it when it inverts a later child of a
+    * difference: the same for a primitive, none for a mesh of more than one face inverted (a
+    * union of triangles, each of whose complements is empty: [[insideComplement]]), a
+    * combination's as [[Combination.crossings]] says.
     */
-  def crossings(shape: Shape, ray: Ray, inverted: Boolean = false): List[Crossing] = shape match
+  def crossings(shape: Shape, ray: Ray, inversions: Int = 0): List[Crossing] = shape match
     case s: Sphere =>
       val oc   = s.centre - ray.origin
       val tca  = oc.dot(ray.direction)
@@ -642,8 +643,8 @@ object Shape:
     // The complement of a mesh of many faces has no surface: each face's crossing would have to
     // lie inside the others' complements, which are empty (its POV-Ray twin is a union of its
     // triangles, and POV-Ray inverts a union into the intersection of its children's complements).
-    case m: Mesh if inverted && m.faceCount > 1 => Nil
-    case m: Mesh                                =>
+    case m: Mesh if inversions == Combination.Inverted && m.faceCount > 1 => Nil
+    case m: Mesh                                                          =>
       (0 until m.faceCount).toList
         .flatMap(f => crossings(m.face(f), ray).map(_.copy(leaf = f)))
         .sortBy(_.t)
@@ -652,10 +653,10 @@ object Shape:
     case t: Torus  => Solids.torusCrossings(t, ray)
     case p: Placed =>
       val (local, stretch) = ownSpace(p, ray)
-      crossings(p.shape, local, inverted).map(c =>
+      crossings(p.shape, local, inversions).map(c =>
         Crossing(c.t / stretch, p.transform.normal(c.normal).normalisedOr(c.normal), c.leaf)
       )
-    case c: Csg => Combination.crossings(c, ray, inverted)
+    case c: Csg => Combination.crossings(c, ray, inversions)
 
   /** True when `point` is inside the solid `shape` (POV-Ray's inside tests, their tolerances
     * included): for a plane, the side its normal points away from; triangles have no inside.

@@ -49,20 +49,20 @@ class KernelProperties extends ScalaCheckSuite:
   private val meshUnion: Gen[Shape] =
     Gen.listOfN(4, Gen.oneOf(triangle, sphere)).map(ts => Csg(CsgOperation.Union, ts.toVector))
   // A union holding triangles may cut too: its complement is not its outside (Shape.holdsPatch).
-  private val csg: Gen[Shape] =
+  // Combinations nested up to `depth` deep, a nested one anywhere among its siblings: as a
+  // later child of a difference it is inverted, and inside another such child inverted twice.
+  private def csgOf(depth: Int): Gen[Shape] =
+    val leaf  = Gen.frequency(3 -> primitive, 3 -> placed, 1 -> meshUnion)
+    val child = if depth == 0 then leaf else Gen.frequency(3 -> leaf, 1 -> csgOf(depth - 1))
     for
       op       <- operation
       n        <- Gen.choose(1, 3)
-      children <- Gen.listOfN(n, Gen.frequency(3 -> primitive, 3 -> placed, 1 -> meshUnion))
-      nested   <- Gen.oneOf(true, false)
-      inner    <- operation
+      children <- Gen.listOfN(n, child)
       moved    <- Gen.option(placement)
     yield
-      val kids = children.toVector
-      val tree =
-        if nested && kids.size >= 2 then Csg(op, Csg(inner, kids.take(2)) +: kids.drop(2))
-        else Csg(op, kids)
+      val tree = Csg(op, children.toVector)
       moved.fold(tree: Shape)(Placed(tree, _))
+  private val csg: Gen[Shape]   = csgOf(2)
   private val shape: Gen[Shape] =
     Gen.frequency(
       2 -> primitive,

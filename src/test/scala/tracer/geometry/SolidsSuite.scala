@@ -202,9 +202,11 @@ class SolidsSuite extends munit.FunSuite:
     val heights = Shape.crossings(cut, down).map(c => 5 - c.t)
     assertEquals(heights.length, 2, heights)
     assert(near(heights(0), 2) && near(heights(1), Math.sqrt(0.75)), heights)
-    // The same through the kernel, and a cutter that is an intersection or a difference keeps
-    // all its children's crossings inside the box, as POV-Ray's inverted ones (unions) do: the
-    // ball's lower half too, under a cutter of the ball and the half-space y > 0.
+    // The same through the kernel. A cutter that is an intersection keeps what it keeps uncut:
+    // POV-Ray inverts it into the merge of its children's complements, which keeps a child's
+    // crossing where the point is inside no other complement, that is inside every other child.
+    // Under the lens of the ball and the half-space y > 0: the ball's upper half and the plane
+    // within the ball, not the ball's lower half.
     val b = CrossingBuffer()
     assertEquals(Kernel.collect(cut, 0.5, 5, 0, 0, -1, 0, b, 0), 2)
     val above = Plane.at(-Vec3.UnitY, 0)
@@ -216,8 +218,23 @@ class SolidsSuite extends munit.FunSuite:
       )
     )
     val seen = Shape.crossings(lens, down).map(c => 5 - c.t)
-    assertEquals(seen.length, 5, seen) // top, ball (y > 0), plane, ball (y < 0), bottom
-    assertEquals(Kernel.collect(lens, 0.5, 5, 0, 0, -1, 0, b, 0), 5)
+    assertEquals(seen.length, 4, seen) // top, ball (y > 0), plane, bottom
+    assert(near(seen(1), Math.sqrt(0.75)) && near(seen(2), 0), seen)
+    assertEquals(Kernel.collect(lens, 0.5, 5, 0, 0, -1, 0, b, 0), 4)
+    // Inverted twice (a difference inside a difference's cutter), a union is a merge: its
+    // children's crossings inside one another go. A box less (a slab less the union of two
+    // overlapping balls): of the balls only the outer surface of the pair is a face.
+    val pair =
+      Csg(CsgOperation.Union, Vector(Sphere(Vec3(-0.3, 0, 0), 1), Sphere(Vec3(0.3, 0, 0), 1)))
+    val slab  = Csg(CsgOperation.Difference, Vector(Box(Vec3(-3, -0.5, -3), Vec3(3, 0.5, 3)), pair))
+    val nest  = Csg(CsgOperation.Difference, Vector(Box(Vec3(-2, -2, -2), Vec3(2, 2, 2)), slab))
+    val along = ray(Vec3(-5, 0, 0), Vec3.UnitX)
+    val xs    = Shape.crossings(nest, along).map(c => c.t - 5)
+    // Along the slab's middle only what the pair carved out of it is left of the box: the pair's
+    // outer surface at −1.3 and 1.3, not the balls' inner surfaces at −0.7 and 0.7.
+    assertEquals(xs.length, 2, xs)
+    assert(near(xs(0), -1.3) && near(xs(1), 1.3), xs)
+    assertEquals(Kernel.collect(nest, -5, 0, 0, 1, 0, 0, b, 0), 2)
     // The solids themselves are unchanged: inside the box and outside the union.
     assert(Shape.inside(cut, Vec3(1.5, 0.5, 1.5)) && !Shape.inside(cut, Vec3(0.5, 0.5, 0)))
 

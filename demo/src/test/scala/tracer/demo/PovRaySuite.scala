@@ -206,6 +206,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a union that cuts cuts with its outer surface only, as POV-Ray's inverted union"):
     version3("cutter-union", psnr = 80.17, off = 0)
 
+  test("an intersection that cuts, and a union inverted twice, are POV-Ray's merges"):
+    version3("cutter-combinations", psnr = 69.26, off = 0.007)
+
   test("a union holding a triangle or a mesh cuts as POV-Ray's patch objects do"):
     version3("patch-cutter", psnr = 86.03, off = 0)
 
