@@ -101,8 +101,8 @@ object PovRay:
       // its corners) carries that space's transforms itself, after all the shape's.
       written.filter(Inheritance.unplaced(_, chain, enclosing)) match
         case Some(surface) =>
-          " " + moves.mkString + texture(surface, ownSpace(surface, enclosing)) + " " + interior +
-            "}"
+          val (own, undo) = ownSpace(surface, enclosing)
+          " " + moves.mkString + texture(surface, own, undo) + " " + interior + "}"
         case None =>
           " " + moves.take(at).mkString + written.fold("")(texture(_) + " ") +
             moves.drop(at).mkString + interior + "}"
@@ -157,24 +157,38 @@ object PovRay:
     s"scale ${num(p.scale)} rotate ${vec(p.rotate)} translate ${vec(p.translate)} "
 
   /** The placements of `surface`'s checker space that lie inside elements placed by `enclosing`
-    * (whose transforms move the texture after the shape's own), innermost first.
+    * (whose transforms move the texture after the shape's own), innermost first; and the
+    * enclosing placements to undo first when the space does not end with them (a checker of a
+    * split union's surface on a leaf of a placed combination: the combination's placement lies
+    * between the pattern and the union's).
     */
-  private def ownSpace(surface: Surface, enclosing: List[Placement]): List[Placement] =
+  private def ownSpace(
+      surface: Surface,
+      enclosing: List[Placement]
+  ): (List[Placement], List[Placement]) =
     surface.pigment match
       case c: Pigment.Checker =>
         val outer = Inheritance.space(enclosing)
-        if c.space.endsWith(outer) then c.space.dropRight(outer.length) else c.space
-      case Pigment.Solid(_) | Pigment.Textured(_) => Nil
+        if c.space.endsWith(outer) then (c.space.dropRight(outer.length), Nil) else (c.space, outer)
+      case Pigment.Solid(_) | Pigment.Textured(_) => (Nil, Nil)
 
-  /** POV-Ray's texture for `f`, its pattern moved by `moves` (innermost first) of its own. */
-  private def texture(f: Surface, moves: List[Placement] = Nil): String =
+  /** POV-Ray's texture for `f`, its pattern moved by `moves` (innermost first) of its own, then
+    * by the inverse of `undo`'s (innermost first), which the transforms after it will redo.
+    */
+  private def texture(
+      f: Surface,
+      moves: List[Placement] = Nil,
+      undo: List[Placement] = Nil
+  ): String =
     def rgbt(c: Colour) = s"rgbt <${num(c.r)}, ${num(c.g)}, ${num(c.b)}, ${num(f.transmit)}>"
     val pigment         = f.pigment match
       case Pigment.Solid(c)    => s"color ${rgbt(c)}"
       case Pigment.Textured(_) => s"color ${rgbt(Colour.grey(0.5))}"
       case c: Pigment.Checker  =>
+        val undone =
+          if undo.isEmpty then "" else s"transform { ${undo.map(placement).mkString}inverse } "
         s"checker color ${rgbt(c.first)}, color ${rgbt(c.second)} scale ${num(c.size)} " +
-          moves.map(placement).mkString
+          moves.map(placement).mkString + undone
     val finish = s"finish { ambient 0 diffuse ${num(f.diffuse)} reflection ${num(f.reflection)}" +
       s" phong ${num(f.phong)} phong_size ${num(f.phongSize)}" +
       s" specular ${num(f.specular)} roughness ${num(f.roughness)} }"

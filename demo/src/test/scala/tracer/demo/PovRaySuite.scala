@@ -188,6 +188,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a checker on a placed union of a triangle and a mesh stays in the union's space"):
     version3("union-checker", psnr = 83.35, off = 0)
 
+  test("a split union's checker on a leaf of a placed difference sits in the union's space"):
+    version3("split-union-checker", psnr = 83.35, off = 0)
+
   test("a mirroring smooth mesh reflects past its faces' planes where POV-Ray's does"):
     version3("smooth-mirror", psnr = 48.43, off = 0.139)
 
