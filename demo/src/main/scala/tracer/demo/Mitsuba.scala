@@ -184,7 +184,9 @@ object Mitsuba:
 
   private val Identity = Affine(identity, 1)
 
-  /** The half-size of a plane's twin on each side of the plane's point nearest the origin. */
+  /** The half-size of a plane's twin on each side of the plane's point nearest the origin: far
+    * beyond any scene's lights and camera, so that no ray of a scene meets its edge.
+    */
   private val PlaneReach = 1e5
 
   private def twins(o: SceneObject, index: Int): Either[String, Vector[Part]] =
@@ -256,16 +258,36 @@ object Mitsuba:
     val u      = helper.cross(n).normalisedOr(Vec3.UnitZ)
     (u, n.cross(u))
 
-  /** The camera-facing square of a plane: two triangles reaching [[PlaneReach]] on each side of
-    * `point`, their corners ordered so that Mitsuba's face normal is the plane's.
+  /** A plane as triangles reaching [[PlaneReach]] on each side of `point`, their corners ordered
+    * so that Mitsuba's face normal is the plane's: a square of half-size [[PlaneCore]] about
+    * `point`, then square rings each [[PlaneGrowth]] times wider, each ring four trapezoids of
+    * two triangles sharing its inner square's corners (no cracks). Mitsuba's hit points lie off a
+    * triangle by about 10⁻⁷ of its size (single precision): near the scene the triangles are
+    * small, so the hit points are as close as on a finite floor; two triangles of 10⁵ units put
+    * them 5·10⁻³ off, and shadowed a tilted plane in stripes (docs/mitsuba.md).
     */
   private def planeFacets(point: Vec3, normal: Vec3, surface: Surface, order: Int) =
     val (u, v)                   = basis(normal)
-    def at(a: Double, b: Double) = point + u * (a * PlaneReach) + v * (b * PlaneReach)
-    Vector(
-      Facet((at(-1, -1), at(1, -1), at(1, 1)), None, surface, order),
-      Facet((at(-1, -1), at(1, 1), at(-1, 1)), None, surface, order)
-    )
+    def at(a: Double, b: Double) = point + u * a + v * b
+    def square(h: Double)        = Vector(at(-h, -h), at(h, -h), at(h, h), at(-h, h))
+    val core                     = square(PlaneCore)
+    val sizes                    =
+      Iterator.iterate(PlaneCore)(_ * PlaneGrowth).takeWhile(_ < PlaneReach).toVector :+ PlaneReach
+    val rings = sizes.zip(sizes.tail).flatMap { (inner, outer) =>
+      val (a, b) = (square(inner), square(outer))
+      (0 until 4).flatMap { k =>
+        val next = (k + 1) % 4
+        Vector((a(k), b(k), b(next)), (a(k), b(next), a(next)))
+      }
+    }
+    ((core(0), core(1), core(2)) +: (core(0), core(2), core(3)) +: rings)
+      .map(corners => Facet(corners, None, surface, order))
+
+  /** The half-size of the innermost square of a plane's twin, in scene units. */
+  private val PlaneCore = 2.0
+
+  /** How much wider each ring of a plane's twin is than the one inside it. */
+  private val PlaneGrowth = 4.0
 
   /** A 4×4 matrix with the three given columns and translation. */
   private def matrix(columns: Vector[Vec3], translation: Vec3): Py =

@@ -351,6 +351,24 @@ class MitsubaSuite extends munit.FunSuite:
     )
   )
 
+  /** A tilted floor under a white sky, nothing else: its radiance is its albedo, 0.8, everywhere.
+    * The twin's plane is rings of triangles; as two triangles of 10⁵ units its single-precision
+    * hit points lay 10⁻³ off it and it shadowed itself in stripes (0.58).
+    */
+  private val tilted = Scene(
+    camera = camera,
+    background = Colour(1, 1, 1),
+    objects = Seq(
+      SceneObject(
+        Plane.at(Vec3(0.1, 1, 0.05).normalisedOr(Vec3.UnitY), 0),
+        diffuse(Colour(0.8, 0.8, 0.8))
+      )
+    )
+  )
+
+  test("a tilted plane under a sky matches Mitsuba's, both at its albedo"):
+    pathAgrees("tilted", tilted, Mitsuba.Settings(32, 24, 128, 3))
+
   test("lobe weights above 1 (diffuse 1.5, a clear surface's mirror) match Mitsuba's at -r 3"):
     pathAgrees("bright", bright, Mitsuba.Settings(48, 36, 512, 3))
 
