@@ -79,27 +79,36 @@ class CrossCheckSuite extends munit.FunSuite:
 
   for seed <- seeds do
     test(s"random scene $seed draws as POV-Ray draws its twin"):
-      val dir = Files.createTempDirectory("crosscheck")
-      try
-        val random = RandomScenes.scene(seed)
-        Files.writeString(dir.resolve("scene.xml"), random.xml)
-        Files.createDirectories(dir.resolve("models"))
-        RandomScenes.models.foreach((name, text) =>
-          Files.writeString(dir.resolve(s"models/$name"), text)
-        )
-        val (ours, theirs) = (render(dir, random.depth), povrayRender(dir, random.depth))
-        assertEquals((ours.width, ours.height), (theirs.width, theirs.height))
-        val (psnr, off) = compare(ours, theirs)
-        assert(
-          psnr >= 40 && off <= 0.5,
-          f"PSNR $psnr%.1f dB, $off%.3f%% of unclipped pixels off by more than 8 levels\n${random.xml}"
-        )
-      finally Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+      check(seed, quick = false)
 
-  private def render(dir: Path, depth: Int): Bitmap =
+  // Quick mode (-q) against the twin's light at the eye, on the first half of the seeds.
+  for seed <- seeds.take(seeds.length / 2) do
+    test(s"random scene $seed in quick mode draws as POV-Ray's eye light does"):
+      check(seed, quick = true)
+
+  private def check(seed: Long, quick: Boolean): Unit =
+    val dir = Files.createTempDirectory("crosscheck")
+    try
+      val random = RandomScenes.scene(seed)
+      Files.writeString(dir.resolve("scene.xml"), random.xml)
+      Files.createDirectories(dir.resolve("models"))
+      RandomScenes.models.foreach((name, text) =>
+        Files.writeString(dir.resolve(s"models/$name"), text)
+      )
+      val ours        = render(dir, random.depth, quick)
+      val theirs      = povrayRender(dir, random.depth, quick)
+      val (psnr, off) = compare(ours, theirs)
+      assertEquals((ours.width, ours.height), (theirs.width, theirs.height))
+      assert(
+        psnr >= 40 && off <= 0.5,
+        f"PSNR $psnr%.1f dB, $off%.3f%% of unclipped pixels off by more than 8 levels\n${random.xml}"
+      )
+    finally Files.walk(dir).sorted(java.util.Comparator.reverseOrder()).forEach(Files.delete)
+
+  private def render(dir: Path, depth: Int, quick: Boolean): Bitmap =
     val err    = ByteArrayOutputStream()
     val status = Main.run(
-      List(
+      (if quick then List("-q") else Nil) ++ List(
         "-r",
         depth.toString,
         "-x",
@@ -118,11 +127,11 @@ class CrossCheckSuite extends munit.FunSuite:
     assertEquals(status, 0, err.toString)
     Ppm.read(Files.readAllBytes(dir.resolve("ours.ppm"))).fold(fail(_), identity)
 
-  private def povrayRender(dir: Path, depth: Int): Bitmap =
+  private def povrayRender(dir: Path, depth: Int, quick: Boolean): Bitmap =
     val scene = SceneXml.load(dir.resolve("scene.xml"), dir).fold(fail(_), identity)
     Files.writeString(
       dir.resolve("scene.pov"),
-      PovRay.write(scene, depth, quick = false, pixels = Some((width, height)))
+      PovRay.write(scene, depth, quick = quick, pixels = Some((width, height)))
     )
     // One thread: POV-Ray's shadow cache makes its picture depend on the order of its pixels.
     val process = ProcessBuilder(
