@@ -583,16 +583,22 @@ final class World(
       case Some(tree) => tree.occluded(ox, oy, oz, dx, dy, dz, limit, query)
       case None       => false)
 
-  /** The shapes that let light through and hold `point` inside them, innermost first: the list
-    * a ray starting at `point` carries across their surfaces ([[Refraction]]). As POV-Ray's
-    * `InitRayContainerState` finds the objects around the camera, so that a camera inside a glass
-    * sphere looks out through it; of several around the point, the later in the scene counts as
-    * the inner. A glass union is listed once for each of its parts that holds the point
+  /** The shapes that hold `point` inside them, innermost first: the list a ray starting at
+    * `point` carries across surfaces ([[Refraction]]). As POV-Ray's `InitRayContainerState` finds
+    * the objects around the camera, so that a camera inside a glass sphere looks out through it:
+    * every object, clear or opaque (each has an interior there, its index of refraction among
+    * them); of several around the point, the unbounded ones (planes) count as the outer, as
+    * POV-Ray's bounding tree lists them first, and otherwise the later in the scene counts as the
+    * inner. A union is listed once for each of its parts that holds the point
     * ([[World.partsHolding]]), as POV-Ray, which splits a union into its children, lists the
     * union's interior once for each child around its camera.
     */
   def containing(point: Vec3): List[Int] =
-    clearShapes.toList.flatMap(i => List.fill(World.partsHolding(shapes(i), point))(i)).reverse
+    val around =
+      shapes.indices.toList.flatMap(i => List.fill(World.partsHolding(shapes(i), point))(i))
+    val outer                = bvh.unbounded.toSet
+    val (unbounded, bounded) = around.partition(outer)
+    (unbounded ++ bounded).reverse
 
   /** The index of the shape `ray` hits first, by testing every shape: the reference that
     * [[nearest]] must agree with (tests and benchmarks).

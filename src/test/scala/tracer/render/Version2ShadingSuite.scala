@@ -1,6 +1,6 @@
 package tracer.render
 
-import tracer.geometry.{Csg, CsgOperation, Placed, Plane, Shape, Sphere, Triangle}
+import tracer.geometry.{Box, Csg, CsgOperation, Placed, Plane, Shape, Sphere, Triangle}
 import tracer.image.{Bitmap, Colour, Encoding}
 import tracer.math.{Placement, Vec3}
 import tracer.scene.*
@@ -76,14 +76,35 @@ class Version2ShadingSuite extends munit.FunSuite with Approx with tracer.testki
     assertEquals(World(scene).containing(eye), List(0))
     assertEquals(samples(render(scene)), List(0, 255, 0))
 
-  test("the clear objects around a point, the later in the scene first; opaque ones not"):
+  // POV-Ray's InitRayContainerState lists every object around the camera, opaque ones too (each
+  // has an interior), those of its bounding tree's unbounded part first.
+  test("the objects around a point, clear or opaque: the later in the scene first, planes last"):
     val ball   = SceneObject(Sphere(Vec3.Zero, 2), Surface(transmit = 0.5, ior = 1.3))
     val inner  = SceneObject(Sphere(Vec3.Zero, 1), Surface(transmit = 0.9, ior = 1.5))
     val opaque = SceneObject(Sphere(Vec3.Zero, 3), Surface())
-    val world  = World(Scene(camera, Colour.Black, Nil, List(ball, opaque, inner)))
-    assertEquals(world.containing(Vec3.Zero), List(2, 0))
-    assertEquals(world.containing(Vec3(1.5, 0, 0)), List(0))
-    assertEquals(world.containing(Vec3(5, 0, 0)), Nil)
+    val floor  = SceneObject(Plane.at(Vec3.UnitY, 4), Surface())
+    val world  = World(Scene(camera, Colour.Black, Nil, List(ball, opaque, inner, floor)))
+    assertEquals(world.containing(Vec3.Zero), List(2, 1, 0, 3))
+    assertEquals(world.containing(Vec3(1.5, 0, 0)), List(1, 0, 3))
+    assertEquals(world.containing(Vec3(5, 0, 0)), List(3))
+    assertEquals(world.containing(Vec3(0, 5, 0)), Nil)
+
+  test("a camera in a glass ball inside an opaque room later in the scene sees straight out"):
+    // In POV-Ray the room is then the innermost object around the camera, so a ray leaving the
+    // ball leaves an overlap (η = 1) and goes straight on, to the green emitter ahead; bent at
+    // the ball's surface (η = 1.5, as from a ball alone) it would go to the red one.
+    val eye   = Vec3(0.5, 0, -0.5)
+    val glass = SceneObject(Sphere(Vec3.Zero, 1), Surface(transmit = 1, ior = 1.5))
+    val room  = SceneObject(Box(Vec3(-5, -5, -5), Vec3(5, 5, 5)), Surface(diffuse = 0))
+    def glow(x: Double, c: Colour) =
+      SceneObject(Sphere(Vec3(x, 0, 3), 0.3), Surface(diffuse = 0, emission = c))
+    val objects = List(glass, room, glow(0.5, Colour(0, 1, 0)), glow(-0.22, Colour(1, 0, 0)))
+    val scene   = Scene(Camera(eye, eye + Vec3.UnitZ), Colour.Black, Nil, objects)
+    assertEquals(World(scene).containing(eye), List(1, 0))
+    assertEquals(samples(render(scene)), List(0, 255, 0))
+    // The room first in the scene, the ball is the innermost and bends the ray.
+    val first = scene.copy(objects = room :: glass :: objects.drop(2))
+    assertEquals(samples(render(first)), List(255, 0, 0))
 
   // POV-Ray splits a union into its children, each with the union's interior, and lists that
   // interior once for each child around the camera.

@@ -185,6 +185,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a camera inside two parts of a glass union sees what POV-Ray's does"):
     version3("eye-in-union", psnr = 49.30, off = 0.042)
 
+  test("a camera in a glass ball inside an opaque room listed after it sees straight out"):
+    version3("eye-in-glass-room", psnr = 85.45, off = 0)
+
   test("a checker on a placed union of a triangle and a mesh stays in the union's space"):
     version3("union-checker", psnr = 83.35, off = 0)
 
