@@ -128,11 +128,14 @@ object PovRay:
           s"cone { ${vec(c.base)}, ${num(c.baseRadius)}, ${vec(c.cap)}, ${num(c.capRadius)}$open$leafRest"
       case tr: Torus => s"torus { ${num(tr.major)}, ${num(tr.minor)}$leafRest"
       case m: Mesh   =>
-        // Its faces, each the triangle it stands for, as when each was a shape of its own.
-        Iterator
+        // Its faces, each the triangle it stands for, as when each was a shape of its own; at the
+        // top in a union, whose one interior they share, as the mesh is one object to the rays
+        // that cross it (in a combination they share its interior already).
+        val faces = Iterator
           .range(0, m.faceCount)
           .map(f => shape(m.face(f), o, leaf + f, chain, enclosing, look))
           .mkString("\n")
+        if look.isRight then s"union {\n$faces\n}" else faces
       case p: Placed => shape(p.shape, o, leaf, p.placement :: chain, enclosing, look)
       case c: Csg    =>
         val name = c.operation match
