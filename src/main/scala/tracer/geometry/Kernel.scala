@@ -302,6 +302,20 @@ object Kernel:
     case c: Csg =>
       CsgKernel.combination(c, ox, oy, oz, dx, dy, dz, buffer, from, normals, inversions)
 
+  /** Runs `body` on the point (px, py, pz) taken back into the placed shape's own space,
+    * A⁻¹(p − T), as [[ownSpace]] takes a ray's origin (the same operations).
+    */
+  private inline def pointBack[A](p: Placed, px: Double, py: Double, pz: Double)(
+      inline body: (Double, Double, Double) => A
+  ): A =
+    val m  = p.back
+    val qx = px - m(9); val qy = py - m(10); val qz = pz - m(11)
+    body(
+      m(0) * qx + m(1) * qy + m(2) * qz,
+      m(3) * qx + m(4) * qy + m(5) * qz,
+      m(6) * qx + m(7) * qy + m(8) * qz
+    )
+
   /** Runs `body` on the ray taken into `p`'s own space (Shape.ownSpace on doubles): its origin,
     * its unit direction and the stretch s by which its distances are longer there.
     *
@@ -391,16 +405,8 @@ object Kernel:
     case t: Torus =>
       val ring = Math.sqrt(px * px + pz * pz) - t.major
       ring * ring + py * py <= t.minor * t.minor
-    case p: Placed =>
-      val m  = p.back
-      val qx = px - m(9); val qy = py - m(10); val qz = pz - m(11)
-      inside(
-        p.shape,
-        m(0) * qx + m(1) * qy + m(2) * qz,
-        m(3) * qx + m(4) * qy + m(5) * qz,
-        m(6) * qx + m(7) * qy + m(8) * qz
-      )
-    case c: Csg =>
+    case p: Placed => pointBack(p, px, py, pz)(inside(p.shape, _, _, _))
+    case c: Csg    =>
       // Perf: Combination.inside as loops over the children's array.
       val parts = c.parts
       c.operation match
@@ -422,16 +428,8 @@ object Kernel:
   /** [[Shape.insideComplement]] on the point (px, py, pz): as [[inside]], negated for a solid. */
   def insideComplement(shape: Shape, px: Double, py: Double, pz: Double): Boolean = shape match
     case _: (Triangle | Mesh) => false
-    case p: Placed            =>
-      val m  = p.back
-      val qx = px - m(9); val qy = py - m(10); val qz = pz - m(11)
-      insideComplement(
-        p.shape,
-        m(0) * qx + m(1) * qy + m(2) * qz,
-        m(3) * qx + m(4) * qy + m(5) * qz,
-        m(6) * qx + m(7) * qy + m(8) * qz
-      )
-    case c: Csg =>
+    case p: Placed            => pointBack(p, px, py, pz)(insideComplement(p.shape, _, _, _))
+    case c: Csg               =>
       // Perf: Combination.insideComplement as loops over the children's array.
       val parts = c.parts
       c.operation match

@@ -2,7 +2,6 @@ package tracer.demo
 
 import java.io.{ByteArrayInputStream, ByteArrayOutputStream, PrintStream}
 import java.nio.file.{Files, Path}
-import java.util.concurrent.TimeUnit
 import tracer.cli.Main
 import tracer.image.{Bitmap, Ppm}
 import tracer.io.SceneXml
@@ -129,33 +128,9 @@ class CrossCheckSuite extends munit.FunSuite:
 
   private def povrayRender(dir: Path, depth: Int, quick: Boolean): Bitmap =
     val scene = SceneXml.load(dir.resolve("scene.xml"), dir).fold(fail(_), identity)
-    Files.writeString(
-      dir.resolve("scene.pov"),
-      PovRay.write(scene, depth, quick = quick, pixels = Some((width, height)))
-    )
+    val pov   = PovRay.write(scene, depth, quick = quick, pixels = Some((width, height)))
     // One thread: POV-Ray's shadow cache makes its picture depend on the order of its pixels.
-    val process = ProcessBuilder(
-      povray.toString,
-      "+WT1",
-      "-A",
-      s"+W$width",
-      s"+H$height",
-      "+Iscene.pov",
-      "+Otheirs.ppm",
-      "+FP",
-      "File_Gamma=1.0",
-      "-D",
-      "-V",
-      "-GA"
-    ).directory(dir.toFile)
-      .redirectErrorStream(true)
-      .redirectOutput(dir.resolve("povray.log").toFile)
-      .start()
-    assert(
-      process.waitFor(300, TimeUnit.SECONDS) && process.exitValue == 0,
-      Files.readString(dir.resolve("povray.log"))
-    )
-    Ppm.read(Files.readAllBytes(dir.resolve("theirs.ppm"))).fold(fail(_), identity)
+    PovRayRun.render(povray, pov, dir, width, height, threads = 1).fold(fail(_), identity)
 
   /** The PSNR over every sample (dB) and the share of pixels (%), of those where neither picture
     * reaches 254 in a channel, with a channel more than 8 levels apart.
