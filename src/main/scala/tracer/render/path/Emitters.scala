@@ -1,6 +1,6 @@
 package tracer.render.path
 
-import tracer.geometry.{Mesh, Sphere, Triangle}
+import tracer.geometry.{Box, Mesh, Placed, Shape, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
 import tracer.render.World
@@ -48,16 +48,49 @@ enum Emitter:
       area: Double
   )
 
+  /** A glowing box (shape `index`), one emitter drawn uniformly by area over its six faces, each
+    * as two triangles (`faces`, wound outwards; `shares` as a mesh's), as Mitsuba draws its
+    * `cube`. Every point of its surface has the same density by area, 1 / `area`, so a hit's
+    * density per unit solid angle needs only the hit's normal, not which triangle it is on.
+    */
+  case Solid(
+      index: Int,
+      faces: IArray[Triangle],
+      shares: IArray[Double],
+      emission: Colour,
+      area: Double
+  )
+
   /** The background, radiance B from every direction no surface blocks, drawn uniformly over
     * the sphere of directions.
     */
   case Sky(radiance: Colour)
 
+/** The part of a glowing shape that next-event estimation draws on, in the world's space. */
+enum Glow:
+  /** A sphere, drawn by the solid angle it fills. */
+  case Round(sphere: Sphere)
+
+  /** A triangle, or a mesh's faces: drawn by area, a hit's face named by its leaf. */
+  case Flat(faces: IArray[Triangle])
+
+  /** A box's faces as twelve outward triangles: drawn by area, a hit's density from its normal. */
+  case Closed(faces: IArray[Triangle])
+
+  /** This glow where `placement` takes its shape. */
+  def placed(placement: tracer.math.Placement): Glow =
+    val t                  = placement.transform
+    def moved(f: Triangle) = Triangle(t.point(f.t0), t.point(f.t1), t.point(f.t2))
+    this match
+      case Round(s)   => Round(Sphere(t.point(s.centre), s.radius * placement.scale))
+      case Flat(fs)   => Flat(fs.map(moved))
+      case Closed(fs) => Closed(fs.map(moved))
+
 /** The emitters of a scene that next-event estimation samples: its point and area lights, its
-  * glowing spheres, triangles and meshes (top-level shapes, not inside a placement or a
-  * combination; a mesh one emitter over all its faces, as Mitsuba's), and the sky when the
-  * background is not black. Each is chosen with the same chance 1/count. Glowing planes, solids
-  * and combinations are found by the paths alone.
+  * glowing spheres, triangles, meshes and boxes (top-level shapes, placed or not, not inside a
+  * combination; a mesh one emitter over all its faces, as Mitsuba's, and a box over its six), and
+  * the sky when the background is not black. Each is chosen with the same chance 1/count.
+  * Glowing planes, cylinders, cones, tori and combinations are found by the paths alone.
   *
   * @param world `scene` compiled: its lights' sub-lights are the world's
   */
@@ -71,11 +104,15 @@ final class Emitters(scene: Scene, world: World):
     )
     val shapes = scene.objects.zipWithIndex.collect {
       case (o, i) if o.leafSurfaces.isEmpty && o.surface.emits =>
-        o.shape match
-          case s: Sphere   => Vector(Emitter.Ball(i, s, o.surface.emission))
-          case t: Triangle => Vector(faces(i, IArray(t), o.surface.emission))
-          case m: Mesh     => Vector(faces(i, IArray.from(m.faces), o.surface.emission))
-          case _           => Vector.empty
+        Emitters.glow(o.shape) match
+          case Some(Glow.Round(s)) => Vector(Emitter.Ball(i, s, o.surface.emission))
+          case Some(Glow.Flat(fs)) =>
+            val (shares, area) = Emitters.shares(fs)
+            Vector(Emitter.Faces(i, fs, shares, o.surface.emission, area))
+          case Some(Glow.Closed(fs)) =>
+            val (shares, area) = Emitters.shares(fs)
+            Vector(Emitter.Solid(i, fs, shares, o.surface.emission, area))
+          case None => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
     IArray.from(lights ++ shapes ++ sky)
@@ -97,21 +134,10 @@ final class Emitters(scene: Scene, world: World):
       all(k) match
         case Emitter.Ball(i, _, _)        => slots(i) = k
         case Emitter.Faces(i, _, _, _, _) => slots(i) = k
+        case Emitter.Solid(i, _, _, _, _) => slots(i) = k
         case _                            => ()
     )
     slots
-
-  /** The emitter of shape `i`, glowing `emission` over `faces` (a triangle's one, a mesh's all). */
-  private def faces(i: Int, faces: IArray[Triangle], emission: tracer.image.Colour): Emitter =
-    val areas = faces.map(Emitters.areaOf)
-    val total = areas.sum
-    Emitter.Faces(
-      i,
-      faces,
-      IArray.from(areas.scanLeft(0.0)(_ + _).tail.map(_ / total)),
-      emission,
-      total
-    )
 
   /** True when there is nothing to sample. */
   def isEmpty: Boolean = count == 0
@@ -128,12 +154,27 @@ final class Emitters(scene: Scene, world: World):
 
   /** The density per unit solid angle with which [[sample]] from `from` draws `point` on the
     * emitting front of shape `i` (choice included), 0 when it cannot; `leaf` is the hit's, which
-    * on a mesh names the face.
+    * on a mesh names the face, and `normal` the surface's there (a box's face: only a box's
+    * density asks it).
     */
-  def density(i: Int, from: Vec3, point: Vec3, leaf: Int = 0): Double =
-    densityAt(i, from.x, from.y, from.z, point.x, point.y, point.z, leaf)
+  def density(i: Int, from: Vec3, point: Vec3, leaf: Int = 0, normal: Vec3 = Vec3.Zero): Double =
+    densityAt(
+      i,
+      from.x,
+      from.y,
+      from.z,
+      point.x,
+      point.y,
+      point.z,
+      leaf,
+      normal.x,
+      normal.y,
+      normal.z
+    )
 
-  /** [[density]] on coordinates: from (fx, fy, fz) to (px, py, pz). */
+  /** [[density]] on coordinates: from (fx, fy, fz) to (px, py, pz), the normal (nx, ny, nz) at
+    * the point, on either side.
+    */
   def densityAt(
       i: Int,
       fx: Double,
@@ -142,7 +183,10 @@ final class Emitters(scene: Scene, world: World):
       px: Double,
       py: Double,
       pz: Double,
-      leaf: Int
+      leaf: Int,
+      nx: Double,
+      ny: Double,
+      nz: Double
   ): Double =
     if ofShape(i) < 0 then 0.0
     else
@@ -150,14 +194,26 @@ final class Emitters(scene: Scene, world: World):
       table(ofShape(i)) match
         case Emitter.Ball(_, sphere, _)          => Emitters.coneDensity(sphere, fx, fy, fz) / count
         case Emitter.Faces(_, faces, _, _, area) =>
-          areaDensity(faces(leaf), area, fx, fy, fz, px, py, pz)
+          val n = faces(leaf).normal
+          areaDensity(n.x, n.y, n.z, area, fx, fy, fz, px, py, pz)
+        case Emitter.Solid(_, _, _, _, area) =>
+          // The hit's normal, on either side: |cos θ| (a box glows outwards, and a path reaches
+          // its outside only from outside).
+          val wx = px - fx
+          val wy = py - fy
+          val wz = pz - fz
+          val s  = if wx * nx + wy * ny + wz * nz > 0 then -1.0 else 1.0
+          areaDensity(nx * s, ny * s, nz * s, area, fx, fy, fz, px, py, pz)
         case _ => 0.0
 
-  /** The density per unit solid angle, choice included, of drawing the point (px, py, pz) on the
-    * front of triangle `t` from (fx, fy, fz), points drawn uniformly over an emitter of `area`.
+  /** The density per unit solid angle, choice included, of drawing the point (px, py, pz) of a
+    * surface of normal (nx, ny, nz) from (fx, fy, fz), on its front, points drawn uniformly over
+    * an emitter of `area`.
     */
   private def areaDensity(
-      t: Triangle,
+      nx: Double,
+      ny: Double,
+      nz: Double,
       area: Double,
       fx: Double,
       fy: Double,
@@ -170,8 +226,7 @@ final class Emitters(scene: Scene, world: World):
     val wy = py - fy
     val wz = pz - fz
     val d2 = wx * wx + wy * wy + wz * wz
-    val n  = t.normal
-    val c  = -(wx * n.x + wy * n.y + wz * n.z) / Math.sqrt(d2)
+    val c  = -(wx * nx + wy * ny + wz * nz) / Math.sqrt(d2)
     if c <= 0 then 0.0 else d2 / (area * c) / count
 
   /** A light for the point `p`, chosen by `choice` among the emitters, with a point on it (or a
@@ -230,6 +285,10 @@ final class Emitters(scene: Scene, world: World):
         // The face by its share of the area, from what is left of the choice (uniform in [0, 1)).
         val f = Emitters.pick(shares, rest)
         pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
+      case Emitter.Solid(_, faces, shares, emission, area) =>
+        // As a mesh: the box's six faces are twelve triangles of one emitter.
+        val f = Emitters.pick(shares, rest)
+        pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
       case Emitter.Sky(radiance) =>
         val z   = 1 - 2 * u1
         val r   = Math.sqrt(Math.max(0.0, 1 - z * z))
@@ -285,6 +344,54 @@ final class Emitters(scene: Scene, world: World):
 object Emitters:
   /** The area of triangle `t`. */
   def areaOf(t: Triangle): Double = t.a.cross(t.b).length / 2
+
+  /** The running shares of `faces`' areas, in order, over their total (the last is 1: what
+    * [[pick]] searches), and that total.
+    */
+  def shares(faces: IArray[Triangle]): (IArray[Double], Double) =
+    val areas = faces.map(areaOf)
+    val total = areas.sum
+    (IArray.from(areas.scanLeft(0.0)(_ + _).tail.map(_ / total)), total)
+
+  /** What next-event estimation can draw on `shape`, in the world's space: a sphere, a triangle
+    * or a mesh's faces, or a box's faces, each taken through the placements around it (a
+    * placement is a similarity: a sphere stays a sphere, a face keeps its winding); None for a
+    * shape of another kind.
+    */
+  def glow(shape: Shape): Option[Glow] =
+    shape match
+      case s: Sphere                => Some(Glow.Round(s))
+      case t: Triangle              => Some(Glow.Flat(IArray(t)))
+      case m: Mesh                  => Some(Glow.Flat(IArray.from(m.faces)))
+      case b: Box                   => Some(Glow.Closed(boxFaces(b)))
+      case Placed(inner, placement) => glow(inner).map(_.placed(placement))
+      case _                        => None
+
+  /** The six faces of box `b` as twelve triangles, each wound so that its normal points out. */
+  def boxFaces(b: Box): IArray[Triangle] =
+    val lo             = b.extent.lo
+    val hi             = b.extent.hi
+    val centre         = (lo + hi) / 2
+    def corner(i: Int) =
+      Vec3(
+        if (i & 1) == 0 then lo.x else hi.x,
+        if (i & 2) == 0 then lo.y else hi.y,
+        if (i & 4) == 0 then lo.z else hi.z
+      )
+    // Each face as its four corners in order around it (the bits of the corner's number: x, y, z).
+    val quads =
+      List((0, 2, 6, 4), (1, 3, 7, 5), (0, 1, 5, 4), (2, 3, 7, 6), (0, 1, 3, 2), (4, 5, 7, 6))
+    IArray.from(quads.flatMap { (a, b, c, d) =>
+      List(
+        outward(corner(a), corner(b), corner(c), centre),
+        outward(corner(a), corner(c), corner(d), centre)
+      )
+    })
+
+  /** The triangle (p, q, r), or (p, r, q), whichever has its normal pointing away from `inside`. */
+  private def outward(p: Vec3, q: Vec3, r: Vec3, inside: Vec3): Triangle =
+    val t = Triangle(p, q, r)
+    if t.normal.dot((p + q + r) / 3 - inside) > 0 then t else Triangle(p, r, q)
 
   /** The first k whose running share `shares(k)` exceeds `u` (the last when rounding leaves none):
     * index k drawn with chance shares(k) − shares(k − 1) for u uniform in [0, 1).

@@ -108,7 +108,8 @@ object PathTracer:
     case Both
 
     /** Next-event estimation alone (the paths find only what it cannot: point lights aside,
-      * light after a mirror or glass, glowing planes, solids and combinations).
+      * light after a mirror or glass, glowing planes, cylinders, cones,
+      * tori and combinations).
       */
     case LightsOnly
 
@@ -205,7 +206,8 @@ object PathTracer:
           if front && surface.emits then
             val e     = surface.emission
             val light =
-              if lastDensity > 0 then emitters.densityAt(i, lx, ly, lz, px, py, pz, leaf)
+              if lastDensity > 0 then
+                emitters.densityAt(i, lx, ly, lz, px, py, pz, leaf, nx, ny, nz)
               else 0.0
             val w = if light > 0 then tracer.pathWeight(lastDensity, light) else 1.0
             r += tr * e.r * w

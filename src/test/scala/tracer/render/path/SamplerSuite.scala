@@ -3,9 +3,9 @@ package tracer.render.path
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Mesh, Ray, Shape, Sphere, Triangle}
+import tracer.geometry.{Box, Mesh, Placed, Ray, Shape, Sphere, Triangle}
 import tracer.image.Colour
-import tracer.math.Vec3
+import tracer.math.{Placement, Vec3}
 import tracer.render.{SamplerKind, World}
 import tracer.scene.{Camera, Scene, SceneObject, Surface}
 
@@ -139,6 +139,63 @@ class SamplerSuite extends ScalaCheckSuite:
         )
         assert(leaf >= 0, s"no face at $q")
         assertEqualsDouble(fanEmitters.density(0, p, q, leaf), s.density, 1e-6 * s.density)
+    }
+
+  // A glowing box, and a box placed (turned and scaled) beside it: one emitter each, drawn by area
+  // over their six faces as Mitsuba draws its cube; a hit's density from its normal there.
+  private val lamp   = Box(Vec3(-1, 0.5, 1.5), Vec3(0.5, 1, 2.5))
+  private val turned = Placed(
+    Box(Vec3(-0.5, -0.2, -0.4), Vec3(0.5, 0.2, 0.4)),
+    Placement(1.5, Vec3(20, 35, -10), Vec3(1.5, -1, 2))
+  )
+  private val boxes        = List(lamp, turned)
+  private val glowingBoxes =
+    Scene(
+      Camera(Vec3(0, 0, -5), Vec3.Zero),
+      Colour.Black,
+      Nil,
+      boxes.map(SceneObject(_, Surface(emission = Colour.White)))
+    )
+  private val boxEmitters = Emitters(glowingBoxes, World(glowingBoxes))
+
+  test("a glowing box, placed or not, is one emitter over its six faces"):
+    assertEquals(boxEmitters.all.length, 2)
+    assert(boxEmitters.samples(0) && boxEmitters.samples(1))
+    for case Emitter.Solid(_, faces, _, _, area) <- boxEmitters.all do
+      assertEquals(faces.length, 12)
+      assertEqualsDouble(area, faces.map(Emitters.areaOf).sum, 1e-12)
+    // The plain box's area: 2(1.5·0.5 + 0.5·1 + 1·1.5); the placed one's, scaled by 1.5².
+    val areas = boxEmitters.all.collect { case Emitter.Solid(_, _, _, _, a) => a }
+    assertEqualsDouble(areas(0), 2 * (0.75 + 0.5 + 1.5), 1e-12)
+    assertEqualsDouble(areas(1), 2 * (0.8 + 0.32 + 0.4) * 2.25, 1e-12)
+
+  test("a box's faces are wound outwards"):
+    for t <- Emitters.boxFaces(lamp) do
+      val centre = (t.t0 + t.t1 + t.t2) / 3
+      assert(t.normal.dot(centre - Vec3(-0.25, 0.75, 2)) > 0, s"$t faces in")
+
+  property("a glowing box's sample density is what density() gives for the point it reaches"):
+    forAll(
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-4.0, 0.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0)
+    ) { (x, y, z, choice, u1, u2) =>
+      val p = Vec3(x, y, z)
+      val s = boxEmitters.sample(p, choice, u1, u2)
+      if !s.dark then
+        // Two emitters, chosen by halves of the choice.
+        val k   = if choice < 0.5 then 0 else 1
+        val ray = Ray(p, s.direction)
+        assertEqualsDouble(Shape.distance(boxes(k), ray), s.distance, 1e-9 * s.distance)
+        val hit = Shape.hitAt(boxes(k), ray, s.distance)
+        assertEqualsDouble(
+          boxEmitters.density(k, p, hit.point, hit.leaf, hit.normal),
+          s.density,
+          1e-6 * s.density
+        )
     }
 
   test("a sphere sampled by solid angle: the estimate of its solid angle is exact"):
