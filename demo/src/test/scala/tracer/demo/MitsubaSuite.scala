@@ -408,8 +408,9 @@ class MitsubaSuite extends munit.FunSuite:
     pathAgrees("glass", glass, Mitsuba.Settings(48, 36, 512, 6))
 
   /** Lamps that next-event estimation draws on, as Mitsuba's area emitters: a glowing box, a
-    * turned one and a glowing ball over Lambert surfaces (`-r 3`). Found by the paths alone, the
-    * boxes' light came out as sparse fireflies where Mitsuba's is smooth.
+    * turned one, a glowing ball and a glowing tube over Lambert surfaces (`-r 3`). Found by the
+    * paths alone, the boxes' and the tube's light came out as sparse fireflies where Mitsuba's
+    * is smooth.
     */
   private val lamps = Scene(
     camera = camera,
@@ -427,11 +428,15 @@ class MitsubaSuite extends munit.FunSuite:
         ),
         Surface(diffuse = 0, emission = Colour(2, 3, 4))
       ),
-      SceneObject(Sphere(Vec3(0, 2.4, 1.5), 0.2), Surface(diffuse = 0, emission = Colour(5, 5, 5)))
+      SceneObject(Sphere(Vec3(0, 2.4, 1.5), 0.2), Surface(diffuse = 0, emission = Colour(5, 5, 5))),
+      SceneObject(
+        Cylinder(Vec3(-1.6, 0, 1.4), Vec3(-1.4, 1.3, 1.2), 0.08),
+        Surface(diffuse = 0, emission = Colour(3, 2, 4))
+      )
     )
   )
 
-  test("glowing boxes, plain and turned, and a glowing ball match Mitsuba's at -r 3"):
+  test("glowing boxes, plain and turned, a glowing ball and a glowing tube match Mitsuba's"):
     pathAgrees("lamps", lamps, Mitsuba.Settings(48, 36, 512, 3))
 
   test("the benchmark room (glowing panel, mirror ball, glass ball) matches Mitsuba's at -r 7"):

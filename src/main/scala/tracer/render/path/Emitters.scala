@@ -1,6 +1,6 @@
 package tracer.render.path
 
-import tracer.geometry.{Box, Mesh, Placed, Shape, Sphere, Triangle}
+import tracer.geometry.{Box, Cone, Mesh, Placed, Shape, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.Vec3
 import tracer.render.World
@@ -61,6 +61,12 @@ enum Emitter:
       area: Double
   )
 
+  /** A glowing cylinder or cone (shape `index`; `cone` in the world's space), one emitter drawn
+    * uniformly by area over its side and, when closed, its two discs (`area` all of it), as
+    * [[Solid]]: a hit's density from its normal.
+    */
+  case Frustum(index: Int, cone: Cone, emission: Colour, area: Double)
+
   /** The background, radiance B from every direction no surface blocks, drawn uniformly over
     * the sphere of directions.
     */
@@ -77,6 +83,9 @@ enum Glow:
   /** A box's faces as twelve outward triangles: drawn by area, a hit's density from its normal. */
   case Closed(faces: IArray[Triangle])
 
+  /** A cylinder's or cone's side and discs: drawn by area, a hit's density from its normal. */
+  case Conical(cone: Cone)
+
   /** This glow where `placement` takes its shape. */
   def placed(placement: tracer.math.Placement): Glow =
     val t                  = placement.transform
@@ -85,12 +94,16 @@ enum Glow:
       case Round(s)   => Round(Sphere(t.point(s.centre), s.radius * placement.scale))
       case Flat(fs)   => Flat(fs.map(moved))
       case Closed(fs) => Closed(fs.map(moved))
+      case Conical(c) =>
+        val k = placement.scale
+        Conical(Cone(t.point(c.base), c.baseRadius * k, t.point(c.cap), c.capRadius * k, c.open))
 
 /** The emitters of a scene that next-event estimation samples: its point and area lights, its
-  * glowing spheres, triangles, meshes and boxes (top-level shapes, placed or not, not inside a
-  * combination; a mesh one emitter over all its faces, as Mitsuba's, and a box over its six), and
-  * the sky when the background is not black. Each is chosen with the same chance 1/count.
-  * Glowing planes, cylinders, cones, tori and combinations are found by the paths alone.
+  * glowing spheres, triangles, meshes, boxes, cylinders and cones (top-level shapes, placed or
+  * not, not inside a combination; a mesh one emitter over all its faces, as Mitsuba's, a box over
+  * its six, a cylinder or cone over its side and discs), and the sky when the background is not
+  * black. Each is chosen with the same chance 1/count. Glowing planes, tori and combinations are
+  * found by the paths alone.
   *
   * @param world `scene` compiled: its lights' sub-lights are the world's
   */
@@ -112,6 +125,8 @@ final class Emitters(scene: Scene, world: World):
           case Some(Glow.Closed(fs)) =>
             val (shares, area) = Emitters.shares(fs)
             Vector(Emitter.Solid(i, fs, shares, o.surface.emission, area))
+          case Some(Glow.Conical(c)) =>
+            Vector(Emitter.Frustum(i, c, o.surface.emission, Emitters.frustumAreas(c).sum))
           case None => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
@@ -135,6 +150,7 @@ final class Emitters(scene: Scene, world: World):
         case Emitter.Ball(i, _, _)        => slots(i) = k
         case Emitter.Faces(i, _, _, _, _) => slots(i) = k
         case Emitter.Solid(i, _, _, _, _) => slots(i) = k
+        case Emitter.Frustum(i, _, _, _)  => slots(i) = k
         case _                            => ()
     )
     slots
@@ -196,15 +212,27 @@ final class Emitters(scene: Scene, world: World):
         case Emitter.Faces(_, faces, _, _, area) =>
           val n = faces(leaf).normal
           areaDensity(n.x, n.y, n.z, area, fx, fy, fz, px, py, pz)
-        case Emitter.Solid(_, _, _, _, area) =>
-          // The hit's normal, on either side: |cos θ| (a box glows outwards, and a path reaches
-          // its outside only from outside).
-          val wx = px - fx
-          val wy = py - fy
-          val wz = pz - fz
-          val s  = if wx * nx + wy * ny + wz * nz > 0 then -1.0 else 1.0
-          areaDensity(nx * s, ny * s, nz * s, area, fx, fy, fz, px, py, pz)
-        case _ => 0.0
+        case Emitter.Solid(_, _, _, _, area) => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
+        case Emitter.Frustum(_, _, _, area)  => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
+        case _                               => 0.0
+
+  /** [[areaDensity]] with the hit's normal (nx, ny, nz) turned towards (fx, fy, fz): |cos θ| (a
+    * solid glows outwards, and a path reaches its outside only from outside).
+    */
+  private def byNormal(
+      area: Double,
+      fx: Double,
+      fy: Double,
+      fz: Double,
+      px: Double,
+      py: Double,
+      pz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double
+  ): Double =
+    val s = if (px - fx) * nx + (py - fy) * ny + (pz - fz) * nz > 0 then -1.0 else 1.0
+    areaDensity(nx * s, ny * s, nz * s, area, fx, fy, fz, px, py, pz)
 
   /** The density per unit solid angle, choice included, of drawing the point (px, py, pz) of a
     * surface of normal (nx, ny, nz) from (fx, fy, fz), on its front, points drawn uniformly over
@@ -289,6 +317,10 @@ final class Emitters(scene: Scene, world: World):
         // As a mesh: the box's six faces are twelve triangles of one emitter.
         val f = Emitters.pick(shares, rest)
         pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
+      case Emitter.Frustum(_, cone, emission, area) =>
+        Emitters.onFrustum(cone, rest, u1, u2) { (x, y, z, nx, ny, nz) =>
+          seen(out, x, y, z, nx, ny, nz, emission, area, px, py, pz)
+        }
       case Emitter.Sky(radiance) =>
         val z   = 1 - 2 * u1
         val r   = Math.sqrt(Math.max(0.0, 1 - z * z))
@@ -323,9 +355,43 @@ final class Emitters(scene: Scene, world: World):
     val a  = 1 - su
     val b  = su * (1 - u2)
     val c  = su * u2
-    val wx = t.t0.x * a + t.t1.x * b + t.t2.x * c - px
-    val wy = t.t0.y * a + t.t1.y * b + t.t2.y * c - py
-    val wz = t.t0.z * a + t.t1.z * b + t.t2.z * c - pz
+    val n  = t.normal
+    seen(
+      out,
+      t.t0.x * a + t.t1.x * b + t.t2.x * c,
+      t.t0.y * a + t.t1.y * b + t.t2.y * c,
+      t.t0.z * a + t.t1.z * b + t.t2.z * c,
+      n.x,
+      n.y,
+      n.z,
+      emission,
+      area,
+      px,
+      py,
+      pz
+    )
+
+  /** The light from the point (qx, qy, qz) of outward normal (nx, ny, nz), drawn uniformly by
+    * area over an emitter of `area` glowing `emission`, seen from (px, py, pz), into `out` (dark
+    * where its front does not face the point).
+    */
+  private def seen(
+      out: Scratch,
+      qx: Double,
+      qy: Double,
+      qz: Double,
+      nx: Double,
+      ny: Double,
+      nz: Double,
+      emission: Colour,
+      area: Double,
+      px: Double,
+      py: Double,
+      pz: Double
+  ): Unit =
+    val wx = qx - px
+    val wy = qy - py
+    val wz = qz - pz
     val d2 = wx * wx + wy * wy + wz * wz
     val d  = Math.sqrt(d2)
     if d <= 0 then out.dark()
@@ -333,8 +399,7 @@ final class Emitters(scene: Scene, world: World):
       val dx     = wx / d
       val dy     = wy / d
       val dz     = wz / d
-      val n      = t.normal
-      val facing = -(dx * n.x + dy * n.y + dz * n.z)
+      val facing = -(dx * nx + dy * ny + dz * nz)
       if facing <= 0 then out.dark()
       else
         val pdf = d2 / (area * facing) / count
@@ -354,9 +419,9 @@ object Emitters:
     (IArray.from(areas.scanLeft(0.0)(_ + _).tail.map(_ / total)), total)
 
   /** What next-event estimation can draw on `shape`, in the world's space: a sphere, a triangle
-    * or a mesh's faces, or a box's faces, each taken through the placements around it (a
-    * placement is a similarity: a sphere stays a sphere, a face keeps its winding); None for a
-    * shape of another kind.
+    * or a mesh's faces, a box's faces, or a cylinder or cone, each taken through the placements
+    * around it (a placement is a similarity: a sphere stays a sphere, a cone a cone, a face keeps
+    * its winding); None for a shape of another kind (a plane, a torus, a combination).
     */
   def glow(shape: Shape): Option[Glow] =
     shape match
@@ -364,8 +429,46 @@ object Emitters:
       case t: Triangle              => Some(Glow.Flat(IArray(t)))
       case m: Mesh                  => Some(Glow.Flat(IArray.from(m.faces)))
       case b: Box                   => Some(Glow.Closed(boxFaces(b)))
+      case c: Cone                  => Some(Glow.Conical(c))
       case Placed(inner, placement) => glow(inner).map(_.placed(placement))
       case _                        => None
+
+  /** The areas of `cone`'s side, base disc and cap disc (the discs 0 when it is open). */
+  def frustumAreas(cone: Cone): Seq[Double] =
+    val (r0, r1) = (cone.baseRadius, cone.capRadius)
+    val slant    = Math.hypot(cone.height, r1 - r0)
+    val discs    = if cone.open then Seq(0.0, 0.0) else Seq(Math.PI * r0 * r0, Math.PI * r1 * r1)
+    Math.PI * (r0 + r1) * slant +: discs
+
+  /** Runs `body` on a point drawn uniformly by area on `cone` (its side, and its discs when it is
+    * closed), with its outward unit normal: the part by its share of the area from `u`, then on
+    * the side the height s ∈ [0, 1] from `u1` with density ∝ the radius there and the angle from
+    * `u2`, on a disc the radius √u₁ and the angle u₂ (each uniform in [0, 1)).
+    */
+  inline def onFrustum(cone: Cone, u: Double, u1: Double, u2: Double)(
+      inline body: (Double, Double, Double, Double, Double, Double) => Unit
+  ): Unit =
+    val areas    = frustumAreas(cone)
+    val total    = areas.sum
+    val (r0, r1) = (cone.baseRadius, cone.capRadius)
+    val axis     = cone.axis
+    val (e1, e2) = Bsdf.tangents(axis)
+    val c        = Turn.cos(u2)
+    val sn       = Turn.sin(u2)
+    val radial   = e1 * c + e2 * sn
+    if u * total < areas(0) || areas(1) + areas(2) <= 0 then
+      // F(s) = (r0·s + (r1 − r0)·s²/2) / ((r0 + r1)/2) = u1, solved without cancellation.
+      val s = u1 * (r0 + r1) / (r0 + Math.sqrt(r0 * r0 + u1 * (r1 * r1 - r0 * r0)))
+      val r = r0 + (r1 - r0) * s
+      val p = cone.base + axis * (s * cone.height) + radial * r
+      val n = (radial - axis * cone.slope).normalisedOr(radial)
+      body(p.x, p.y, p.z, n.x, n.y, n.z)
+    else
+      val onBase = u * total < areas(0) + areas(1)
+      val centre = if onBase then cone.base else cone.cap
+      val n      = if onBase then -axis else axis
+      val p      = centre + radial * ((if onBase then r0 else r1) * Math.sqrt(u1))
+      body(p.x, p.y, p.z, n.x, n.y, n.z)
 
   /** The six faces of box `b` as twelve triangles, each wound so that its normal points out. */
   def boxFaces(b: Box): IArray[Triangle] =

@@ -108,8 +108,7 @@ object PathTracer:
     case Both
 
     /** Next-event estimation alone (the paths find only what it cannot: point lights aside,
-      * light after a mirror or glass, glowing planes, cylinders, cones,
-      * tori and combinations).
+      * light after a mirror or glass, glowing planes, tori and combinations).
       */
     case LightsOnly
 

@@ -1,6 +1,6 @@
 package tracer.render.path
 
-import tracer.geometry.{Box, Placed, Plane, Sphere, Triangle}
+import tracer.geometry.{Box, Cone, Cylinder, Placed, Plane, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.{Placement, Vec3}
 import tracer.render.{SamplerKind, World}
@@ -239,9 +239,9 @@ class PathAnalyticSuite extends munit.FunSuite:
     val (mean2, err2) = meanAndError(diffBoth)
     assert(Math.abs(mean2) <= K * err2, s"combined minus path-only: $mean2 ± $err2")
 
-  // Glowing boxes and placed shapes are drawn by next-event estimation too (Emitters.glow): drawn
-  // by it alone or found by the paths alone, their light is the same.
-  test("next-event-only and path-only estimates of glowing boxes and placed shapes agree"):
+  // Glowing boxes, cylinders, cones and placed shapes are drawn by next-event estimation too
+  // (Emitters.glow): drawn by it alone or found by the paths alone, their light is the same.
+  test("next-event-only and path-only estimates of glowing solids and placed shapes agree"):
     val floor  = PathScenes.square(Vec3(-3, -1, -3), Vec3(0, 0, 6), Vec3(6, 0, 0))
     val turned = Placement(0.8, Vec3(25, 40, 10), Vec3(0.9, 0.9, 0.4))
     val scene  = Scene(
@@ -263,11 +263,17 @@ class PathAnalyticSuite extends munit.FunSuite:
           ),
           3,
           0
+        ),
+        glowing(Cylinder(Vec3(1, -1, 0.8), Vec3(1.2, 0.2, 1), 0.15), 3, 0.5),
+        glowing(
+          Placed(Cone(Vec3(0, 0, 0), 0.3, Vec3(0, 0.5, 0), 0.1, open = true), turned),
+          3,
+          0
         )
       )
     )
     val emitters = Emitters(scene, World(scene))
-    assertEquals((2 to 5).map(emitters.samples), (2 to 5).map(_ => true))
+    assertEquals((2 to 7).map(emitters.samples), (2 to 7).map(_ => true))
     val lights        = renderWith(scene, 12, 256, 3, PathTracer.Strategy.LightsOnly)
     val paths         = renderWith(scene, 12, 256, 3, PathTracer.Strategy.PathsOnly)
     val both          = renderWith(scene, 12, 256, 3, PathTracer.Strategy.Both)

@@ -3,7 +3,7 @@ package tracer.render.path
 import munit.ScalaCheckSuite
 import org.scalacheck.Gen
 import org.scalacheck.Prop.forAll
-import tracer.geometry.{Box, Mesh, Placed, Ray, Shape, Sphere, Triangle}
+import tracer.geometry.{Box, Cone, Cylinder, Mesh, Placed, Ray, Shape, Sphere, Triangle}
 import tracer.image.Colour
 import tracer.math.{Placement, Vec3}
 import tracer.render.{SamplerKind, World}
@@ -193,6 +193,68 @@ class SamplerSuite extends ScalaCheckSuite:
         val hit = Shape.hitAt(boxes(k), ray, s.distance)
         assertEqualsDouble(
           boxEmitters.density(k, p, hit.point, hit.leaf, hit.normal),
+          s.density,
+          1e-6 * s.density
+        )
+    }
+
+  // Glowing cylinders and cones: one emitter each over the side and, closed, both discs.
+  private val frustums = List(
+    Cylinder(Vec3(-1, 0.5, 1.5), Vec3(-0.4, 1.5, 2.5), 0.4),
+    Placed(
+      Cone(Vec3(0, 0, 0), 0.5, Vec3(0, 1, 0), 0.2, open = true),
+      Placement(1.2, Vec3(70, 0, 20), Vec3(1.5, -1, 2))
+    ),
+    Cone(Vec3(0.5, 1, 1.2), 0.6, Vec3(1.5, 1.5, 2.4), 0)
+  )
+  private val glowingFrustums =
+    Scene(
+      Camera(Vec3(0, 0, -5), Vec3.Zero),
+      Colour.Black,
+      Nil,
+      frustums.map(SceneObject(_, Surface(emission = Colour.White)))
+    )
+  private val frustumEmitters = Emitters(glowingFrustums, World(glowingFrustums))
+
+  test("a glowing cylinder or cone is one emitter over its side and, closed, its discs"):
+    assertEquals(frustumEmitters.all.length, 3)
+    val areas = frustumEmitters.all.collect { case Emitter.Frustum(_, _, _, a) => a }
+    // The cylinder: side 2π·0.4·|(0.6, 1, 1)|, discs π·0.4² each.
+    val length = Math.sqrt(0.36 + 1 + 1)
+    assertEqualsDouble(areas(0), 2 * Math.PI * 0.4 * length + 2 * Math.PI * 0.16, 1e-12)
+    // The open cone, scaled by 1.2: its side alone, π(r0 + r1)·slant.
+    assertEqualsDouble(areas(1), Math.PI * 0.7 * Math.hypot(1, 0.3) * 1.44, 1e-12)
+
+  test("a cone's side is drawn uniformly by area: its points' mean height is the side's centroid"):
+    // Radius r(s) = r0 + (r1 − r0)s along the height s ∈ [0, 1]: the side's area density is ∝
+    // r(s), so its points' mean s is ∫ s·r / ∫ r = (r0/2 + (r1 − r0)/3) / ((r0 + r1)/2).
+    val cone    = Cone(Vec3(0, 0, 0), 0.9, Vec3(0, 2, 0), 0.1, open = true)
+    val n       = 20000
+    val heights = new Array[Double](n)
+    for i <- 0 until n do
+      Emitters.onFrustum(cone, 0.5, (i + 0.5) / n, 0.3)((_, y, _, _, _, _) => heights(i) = y / 2)
+    val exact = (0.45 + (0.1 - 0.9) / 3) / 0.5
+    assertEqualsDouble(heights.sum / n, exact, 1e-6)
+
+  property("a glowing cylinder's or cone's sample density is what density() gives where it lands"):
+    forAll(
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-4.0, 0.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0)
+    ) { (x, y, z, choice, u1, u2) =>
+      val p = Vec3(x, y, z)
+      val s = frustumEmitters.sample(p, choice, u1, u2)
+      if !s.dark then
+        // Three emitters, chosen by thirds of the choice.
+        val k   = Math.min(2, (choice * 3).toInt)
+        val ray = Ray(p, s.direction)
+        assertEqualsDouble(Shape.distance(frustums(k), ray), s.distance, 1e-9 * s.distance)
+        val hit = Shape.hitAt(frustums(k), ray, s.distance)
+        assertEqualsDouble(
+          frustumEmitters.density(k, p, hit.point, hit.leaf, hit.normal),
           s.density,
           1e-6 * s.density
         )
