@@ -703,8 +703,9 @@ object Shape:
     case p: Placed                                           => leafCount(p.shape)
     case _: (Sphere | Plane | Triangle | Box | Cone | Torus) => 1
 
-  /** The smallest axis-aligned box around `shape`, or `None` when it is unbounded (a plane, or a
-    * combination that keeps all of one).
+  /** The smallest axis-aligned box around `shape` (for an intersection or difference holding a
+    * triangle or mesh, the box around all its children, which it needs when it cuts), or `None`
+    * when it is unbounded (a plane, or a combination that keeps all of one).
     */
   def bounds(shape: Shape): Option[Bounds] = shape match
     case s: Sphere =>
@@ -723,11 +724,15 @@ object Shape:
     case p: Placed => bounds(p.shape).map(b => Bounds.around(b.corners.map(p.transform.point)))
     case c: Csg    =>
       val inner = c.children.map(bounds)
+      def all   = if inner.forall(_.isDefined) then Some(inner.flatten.reduce(_.union(_))) else None
+      // Why: inverted (cutting, as a later child of a difference), an intersection or difference
+      // is the merge of its children's complements, and a patch's complement is empty: its other
+      // children's surfaces are then kept beyond the box they share, so it takes all of theirs.
       c.operation match
-        case CsgOperation.Union =>
-          if inner.forall(_.isDefined) then Some(inner.flatten.reduce(_.union(_))) else None
-        case CsgOperation.Intersection => inner.flatten.reduceOption(_.intersection(_))
-        case CsgOperation.Difference   => inner.head
+        case CsgOperation.Union                 => all
+        case _ if c.children.exists(holdsPatch) => all
+        case CsgOperation.Intersection          => inner.flatten.reduceOption(_.intersection(_))
+        case CsgOperation.Difference            => inner.head
 
   /** The box around a disc of `radius` centred at `centre` at right angles to unit `axis`. */
   private def disc(centre: Vec3, radius: Double, axis: Vec3): Bounds =

@@ -272,6 +272,31 @@ class SolidsSuite extends munit.FunSuite:
     assertEquals(Shape.crossings(solid, through).map(_.t), List(3.0, 4.0, 6.0, 7.0))
     assert(Shape.inside(solid, Vec3(1.5, 1.5, 1.5)) && Kernel.inside(solid, 1.5, 1.5, 1.5))
 
+  test("a cutting intersection holding a far triangle still cuts with its other children"):
+    // A ball less (a cone ∩ a union holding only a triangle far away). Inverted, the intersection
+    // is the merge of its children's complements, and the union's is empty: the cone's whole
+    // surface is kept, beyond the box the two children share (empty here). So the ball is less
+    // the cone, and a ray down into the hole meets the cone's base disc at z = 0, not the ball's
+    // far side (POV-Ray draws the same; the common box culled the cone: the hole looked empty).
+    val cone = Cone(Vec3.Zero, 0.6, Vec3(0, 0, 2), 0)
+    val far  = Csg(
+      CsgOperation.Union,
+      Vector(Triangle(Vec3(9, 0, 0), Vec3(10, 0, 0), Vec3(9, 1, 0)))
+    )
+    val cut = Csg(
+      CsgOperation.Difference,
+      Vector(Sphere(Vec3.Zero, 1), Csg(CsgOperation.Intersection, Vector(cone, far)))
+    )
+    val down = ray(Vec3(0.2, 0, 5), Vec3(0, 0, -1))
+    assertEquals(Shape.crossings(cut, down).headOption.map(_.t), Some(5.0))
+    val b = CrossingBuffer()
+    assert(Kernel.collect(cut, 0.2, 0, 5, 0, 0, -1, b, 0) > 0)
+    assertEquals(b.t(0), 5.0)
+    // A difference whose first child holds the patch: inverted, the merge of that child's (empty)
+    // complement and the cone, so its box must hold the cone too.
+    val patchFirst = Csg(CsgOperation.Difference, Vector(far, cone))
+    assert(Shape.bounds(patchFirst).exists(_.contains(Vec3(0.2, 0, 0.5))))
+
   test("Polynomial.roots finds every real root of a quartic in an interval, in order"):
     // (x − 1)(x − 2)(x − 3)(x − 4) = x⁴ − 10x³ + 35x² − 50x + 24
     val c     = IArray(24.0, -50.0, 35.0, -10.0, 1.0)

@@ -200,6 +200,9 @@ class PovRaySuite extends munit.FunSuite:
   test("a union holding a triangle or a mesh cuts as POV-Ray's patch objects do"):
     version3("patch-cutter", psnr = 86.03, off = 0)
 
+  test("a cutting intersection or difference holding a far triangle cuts with its other children"):
+    version3("patch-far", psnr = 79.04, off = 0)
+
   test("a shadow through a clear child of a combination is dimmed at each of its faces"):
     version3("clear-child", psnr = 58.85, off = 0.035)
 
