@@ -53,7 +53,7 @@ enum Emitter:
     * `cube`. Every point of its surface has the same density by area, 1 / `area`, so a hit's
     * density per unit solid angle needs only the hit's normal, not which triangle it is on.
     */
-  case Solid(
+  case Cuboid(
       index: Int,
       faces: IArray[Triangle],
       shares: IArray[Double],
@@ -62,10 +62,11 @@ enum Emitter:
   )
 
   /** A glowing cylinder or cone (shape `index`; `cone` in the world's space), one emitter drawn
-    * uniformly by area over its side and, when closed, its two discs (`area` all of it), as
-    * [[Solid]]: a hit's density from its normal.
+    * uniformly by area over its side and, when closed, its two discs (their areas `parts`,
+    * [[Emitters.frustumAreas]]; `area` all of it), as
+    * [[Cuboid]]: a hit's density from its normal.
     */
-  case Frustum(index: Int, cone: Cone, emission: Colour, area: Double)
+  case Frustum(index: Int, cone: Cone, emission: Colour, parts: IArray[Double], area: Double)
 
   /** The background, radiance B from every direction no surface blocks, drawn uniformly over
     * the sphere of directions.
@@ -81,7 +82,7 @@ enum Glow:
   case Flat(faces: IArray[Triangle])
 
   /** A box's faces as twelve outward triangles: drawn by area, a hit's density from its normal. */
-  case Closed(faces: IArray[Triangle])
+  case Cuboid(faces: IArray[Triangle])
 
   /** A cylinder's or cone's side and discs: drawn by area, a hit's density from its normal. */
   case Conical(cone: Cone)
@@ -93,7 +94,7 @@ enum Glow:
     this match
       case Round(s)   => Round(Sphere(t.point(s.centre), s.radius * placement.scale))
       case Flat(fs)   => Flat(fs.map(moved))
-      case Closed(fs) => Closed(fs.map(moved))
+      case Cuboid(fs) => Cuboid(fs.map(moved))
       case Conical(c) =>
         val k = placement.scale
         Conical(Cone(t.point(c.base), c.baseRadius * k, t.point(c.cap), c.capRadius * k, c.open))
@@ -122,11 +123,12 @@ final class Emitters(scene: Scene, world: World):
           case Some(Glow.Flat(fs)) =>
             val (shares, area) = Emitters.shares(fs)
             Vector(Emitter.Faces(i, fs, shares, o.surface.emission, area))
-          case Some(Glow.Closed(fs)) =>
+          case Some(Glow.Cuboid(fs)) =>
             val (shares, area) = Emitters.shares(fs)
-            Vector(Emitter.Solid(i, fs, shares, o.surface.emission, area))
+            Vector(Emitter.Cuboid(i, fs, shares, o.surface.emission, area))
           case Some(Glow.Conical(c)) =>
-            Vector(Emitter.Frustum(i, c, o.surface.emission, Emitters.frustumAreas(c).sum))
+            val parts = Emitters.frustumAreas(c)
+            Vector(Emitter.Frustum(i, c, o.surface.emission, parts, parts.sum))
           case None => Vector.empty
     }.flatten
     val sky = Option.when(scene.background.max > 0)(Emitter.Sky(scene.background))
@@ -147,11 +149,11 @@ final class Emitters(scene: Scene, world: World):
     val slots = Array.fill(scene.objects.size)(-1)
     all.indices.reverse.foreach(k =>
       all(k) match
-        case Emitter.Ball(i, _, _)        => slots(i) = k
-        case Emitter.Faces(i, _, _, _, _) => slots(i) = k
-        case Emitter.Solid(i, _, _, _, _) => slots(i) = k
-        case Emitter.Frustum(i, _, _, _)  => slots(i) = k
-        case _                            => ()
+        case Emitter.Ball(i, _, _)          => slots(i) = k
+        case Emitter.Faces(i, _, _, _, _)   => slots(i) = k
+        case Emitter.Cuboid(i, _, _, _, _)  => slots(i) = k
+        case Emitter.Frustum(i, _, _, _, _) => slots(i) = k
+        case _                              => ()
     )
     slots
 
@@ -170,8 +172,8 @@ final class Emitters(scene: Scene, world: World):
 
   /** The density per unit solid angle with which [[sample]] from `from` draws `point` on the
     * emitting front of shape `i` (choice included), 0 when it cannot; `leaf` is the hit's, which
-    * on a mesh names the face, and `normal` the surface's there (a box's face: only a box's
-    * density asks it).
+    * on a mesh names the face, and `normal` the surface's there (only a box's, a cylinder's or a
+    * cone's density asks it).
     */
   def density(i: Int, from: Vec3, point: Vec3, leaf: Int = 0, normal: Vec3 = Vec3.Zero): Double =
     densityAt(
@@ -212,9 +214,9 @@ final class Emitters(scene: Scene, world: World):
         case Emitter.Faces(_, faces, _, _, area) =>
           val n = faces(leaf).normal
           areaDensity(n.x, n.y, n.z, area, fx, fy, fz, px, py, pz)
-        case Emitter.Solid(_, _, _, _, area) => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
-        case Emitter.Frustum(_, _, _, area)  => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
-        case _                               => 0.0
+        case Emitter.Cuboid(_, _, _, _, area)  => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
+        case Emitter.Frustum(_, _, _, _, area) => byNormal(area, fx, fy, fz, px, py, pz, nx, ny, nz)
+        case _                                 => 0.0
 
   /** [[areaDensity]] with the hit's normal (nx, ny, nz) turned towards (fx, fy, fz): |cos θ| (a
     * solid glows outwards, and a path reaches its outside only from outside).
@@ -313,12 +315,12 @@ final class Emitters(scene: Scene, world: World):
         // The face by its share of the area, from what is left of the choice (uniform in [0, 1)).
         val f = Emitters.pick(shares, rest)
         pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
-      case Emitter.Solid(_, faces, shares, emission, area) =>
+      case Emitter.Cuboid(_, faces, shares, emission, area) =>
         // As a mesh: the box's six faces are twelve triangles of one emitter.
         val f = Emitters.pick(shares, rest)
         pointOn(out, faces(f), emission, area, px, py, pz, u1, u2)
-      case Emitter.Frustum(_, cone, emission, area) =>
-        Emitters.onFrustum(cone, rest, u1, u2) { (x, y, z, nx, ny, nz) =>
+      case Emitter.Frustum(_, cone, emission, parts, area) =>
+        Emitters.onFrustum(cone, parts, rest, u1, u2) { (x, y, z, nx, ny, nz) =>
           seen(out, x, y, z, nx, ny, nz, emission, area, px, py, pz)
         }
       case Emitter.Sky(radiance) =>
@@ -428,28 +430,27 @@ object Emitters:
       case s: Sphere                => Some(Glow.Round(s))
       case t: Triangle              => Some(Glow.Flat(IArray(t)))
       case m: Mesh                  => Some(Glow.Flat(IArray.from(m.faces)))
-      case b: Box                   => Some(Glow.Closed(boxFaces(b)))
+      case b: Box                   => Some(Glow.Cuboid(boxFaces(b)))
       case c: Cone                  => Some(Glow.Conical(c))
       case Placed(inner, placement) => glow(inner).map(_.placed(placement))
       case _                        => None
 
   /** The areas of `cone`'s side, base disc and cap disc (the discs 0 when it is open). */
-  def frustumAreas(cone: Cone): Seq[Double] =
+  def frustumAreas(cone: Cone): IArray[Double] =
     val (r0, r1) = (cone.baseRadius, cone.capRadius)
-    val slant    = Math.hypot(cone.height, r1 - r0)
-    val discs    = if cone.open then Seq(0.0, 0.0) else Seq(Math.PI * r0 * r0, Math.PI * r1 * r1)
-    Math.PI * (r0 + r1) * slant +: discs
+    val side     = Math.PI * (r0 + r1) * Math.hypot(cone.height, r1 - r0)
+    if cone.open then IArray(side, 0.0, 0.0) else IArray(side, Math.PI * r0 * r0, Math.PI * r1 * r1)
 
   /** Runs `body` on a point drawn uniformly by area on `cone` (its side, and its discs when it is
-    * closed), with its outward unit normal: the part by its share of the area from `u`, then on
+    * closed; their areas `areas`, [[frustumAreas]]), with its outward unit normal: the part by its
+    * share of the area from `u`, then on
     * the side the height s ∈ [0, 1] from `u1` with density ∝ the radius there and the angle from
     * `u2`, on a disc the radius √u₁ and the angle u₂ (each uniform in [0, 1)).
     */
-  inline def onFrustum(cone: Cone, u: Double, u1: Double, u2: Double)(
+  inline def onFrustum(cone: Cone, areas: IArray[Double], u: Double, u1: Double, u2: Double)(
       inline body: (Double, Double, Double, Double, Double, Double) => Unit
   ): Unit =
-    val areas    = frustumAreas(cone)
-    val total    = areas.sum
+    val total    = areas(0) + areas(1) + areas(2)
     val (r0, r1) = (cone.baseRadius, cone.capRadius)
     val axis     = cone.axis
     val (e1, e2) = Bsdf.tangents(axis)

@@ -161,11 +161,11 @@ class SamplerSuite extends ScalaCheckSuite:
   test("a glowing box, placed or not, is one emitter over its six faces"):
     assertEquals(boxEmitters.all.length, 2)
     assert(boxEmitters.samples(0) && boxEmitters.samples(1))
-    for case Emitter.Solid(_, faces, _, _, area) <- boxEmitters.all do
+    for case Emitter.Cuboid(_, faces, _, _, area) <- boxEmitters.all do
       assertEquals(faces.length, 12)
       assertEqualsDouble(area, faces.map(Emitters.areaOf).sum, 1e-12)
     // The plain box's area: 2(1.5·0.5 + 0.5·1 + 1·1.5); the placed one's, scaled by 1.5².
-    val areas = boxEmitters.all.collect { case Emitter.Solid(_, _, _, _, a) => a }
+    val areas = boxEmitters.all.collect { case Emitter.Cuboid(_, _, _, _, a) => a }
     assertEqualsDouble(areas(0), 2 * (0.75 + 0.5 + 1.5), 1e-12)
     assertEqualsDouble(areas(1), 2 * (0.8 + 0.32 + 0.4) * 2.25, 1e-12)
 
@@ -218,7 +218,7 @@ class SamplerSuite extends ScalaCheckSuite:
 
   test("a glowing cylinder or cone is one emitter over its side and, closed, its discs"):
     assertEquals(frustumEmitters.all.length, 3)
-    val areas = frustumEmitters.all.collect { case Emitter.Frustum(_, _, _, a) => a }
+    val areas = frustumEmitters.all.collect { case Emitter.Frustum(_, _, _, _, a) => a }
     // The cylinder: side 2π·0.4·|(0.6, 1, 1)|, discs π·0.4² each.
     val length = Math.sqrt(0.36 + 1 + 1)
     assertEqualsDouble(areas(0), 2 * Math.PI * 0.4 * length + 2 * Math.PI * 0.16, 1e-12)
@@ -232,7 +232,9 @@ class SamplerSuite extends ScalaCheckSuite:
     val n       = 20000
     val heights = new Array[Double](n)
     for i <- 0 until n do
-      Emitters.onFrustum(cone, 0.5, (i + 0.5) / n, 0.3)((_, y, _, _, _, _) => heights(i) = y / 2)
+      Emitters.onFrustum(cone, Emitters.frustumAreas(cone), 0.5, (i + 0.5) / n, 0.3)(
+        (_, y, _, _, _, _) => heights(i) = y / 2
+      )
     val exact = (0.45 + (0.1 - 0.9) / 3) / 0.5
     assertEqualsDouble(heights.sum / n, exact, 1e-6)
 
