@@ -154,11 +154,12 @@ object SceneWriter:
       case t: Torus =>
         s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>""" +
           s"${element(Some(o.surfaceOf(leaf)))}</torus>"
-      case p: Placed if placement.isIdentity =>
+      case p: Placed if placement.isIdentity && !(enclosing.isEmpty && unplacedAtTop(p.shape)) =>
         shape(p.shape, o, leaf, p.placement, enclosing, look)
       case p: Placed =>
-        // Placed twice (a child of a union that was split): the union it came from, written
-        // again, which reading splits the same way.
+        // Placed twice (a child of a union that was split), or a placed sphere or plane at the top
+        // of the scene, where the format places neither: the union it came from, written again,
+        // which reading splits the same way.
         // The union carries the surface where its pattern lies in the union's space.
         val (outer, inner) = look match
           case Right(top)
@@ -186,6 +187,11 @@ object SceneWriter:
           )
         }
         s"<$name$scale>${children.mkString}${element(own)}</$name>"
+
+  /** True for a shape the format places only inside a combination: a sphere or a plane. */
+  private def unplacedAtTop(s: Shape): Boolean = s match
+    case _: (Sphere | Plane) => true
+    case _                   => false
 
   private def place(p: Placement): String =
     (if p.rotate != Vec3.Zero then vector("rotate", p.rotate) else "") +

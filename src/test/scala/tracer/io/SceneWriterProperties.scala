@@ -275,6 +275,20 @@ class SceneWriterProperties extends ScalaCheckSuite:
     val text = SceneWriter.write(scene).fold(fail(_), identity)
     assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
 
+  test("a split union's sphere, placed, is written as its union and read back the same"):
+    // The format places a sphere only inside a combination; a placed union split into its
+    // children leaves a placed sphere at the top of the scene, which is written as its own union.
+    val xml = """<scene><camera><location x="0" y="0" z="-5"/><lookat x="0" y="0" z="0"/></camera>
+      |<union scale="2">
+      |  <sphere radius="0.5"><centre x="0" y="1" z="0"/><surface diffuse="0.7"/></sphere>
+      |  <triangle><corner x="0" y="0" z="0"/><corner x="1" y="0" z="0"/><corner x="0" y="1" z="0"/></triangle>
+      |  <rotate x="0" y="30" z="10"/><translate x="1" y="0" z="0"/>
+      |</union></scene>""".stripMargin
+    val scene = SceneXml.parse(xml, textures).fold(e => fail(e.describe), identity)
+    assertEquals(scene.objects.length, 2)
+    val text = SceneWriter.write(scene).fold(fail(_), identity)
+    assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
+
   property("write(scene) tells exactly the smooth and textured mesh triangles it cannot write"):
     forAll(scene, Gen.listOf(meshTriangle), Gen.choose(0, 10)) { (s, meshes, at) =>
       val mixed = s.copy(objects = s.objects.take(at) ++ meshes ++ s.objects.drop(at))
