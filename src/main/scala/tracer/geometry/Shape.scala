@@ -126,6 +126,21 @@ final case class Triangle(
   /** The denominator of equation 33, (a · a)(b · b) − (a · b)²; positive for a real triangle. */
   val denominator: Double = aa * bb - ab * ab
 
+  /** This triangle where `placement` takes it: its corners moved and its corner normals turned,
+    * its texture coordinates kept (the format never places a triangle; a placed union's are read
+    * so, and written so).
+    */
+  def placed(placement: Placement): Triangle =
+    val m             = placement.transform
+    def turn(n: Vec3) = m.normal(n).normalisedOr(n)
+    Triangle(
+      m.point(t0),
+      m.point(t1),
+      m.point(t2),
+      textureCorners,
+      cornerNormals.map((a, b, c) => (turn(a), turn(b), turn(c)))
+    )
+
 /** Constructors for [[Triangle]]. */
 object Triangle:
   /** The triangle with corner `origin` and legs `a` and `b`. */

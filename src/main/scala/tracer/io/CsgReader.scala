@@ -106,18 +106,9 @@ private[io] final class CsgReader(shapes: ShapeReader, surfaces: SurfaceReader):
     * wrapped.
     */
   private def place(shape: Shape, p: Placement): Shape = shape match
-    case t: Triangle =>
-      val m                         = p.transform
-      def turn(n: tracer.math.Vec3) = m.normal(n).normalisedOr(n)
-      Triangle(
-        m.point(t.t0),
-        m.point(t.t1),
-        m.point(t.t2),
-        t.textureCorners,
-        t.cornerNormals.map((a, b, c) => (turn(a), turn(b), turn(c)))
-      )
-    case m: Mesh => m.transformed(p.transform)
-    case other   => shapes.placed(other, p)
+    case t: Triangle => t.placed(p)
+    case m: Mesh     => m.transformed(p.transform)
+    case other       => shapes.placed(other, p)
 
 /** The limits of [[CsgReader]]. */
 private[io] object CsgReader:

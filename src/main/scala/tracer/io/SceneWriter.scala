@@ -154,6 +154,9 @@ object SceneWriter:
       case t: Torus =>
         s"""<torus major="${number(t.major)}" minor="${number(t.minor)}"$scale>""" +
           s"${element(Some(o.surfaceOf(leaf)))}</torus>"
+      case Placed(t: Triangle, p) =>
+        // The format never places a triangle: its corners carry the placement, as when read.
+        shape(t.placed(p), o, leaf, placement, enclosing, look)
       case p: Placed if placement.isIdentity && !(enclosing.isEmpty && unplacedAtTop(p.shape)) =>
         shape(p.shape, o, leaf, p.placement, enclosing, look)
       case p: Placed =>

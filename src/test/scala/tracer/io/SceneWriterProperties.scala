@@ -289,6 +289,19 @@ class SceneWriterProperties extends ScalaCheckSuite:
     val text = SceneWriter.write(scene).fold(fail(_), identity)
     assertEquals(SceneXml.parse(text, textures).map(_.objects), Right(scene.objects), text)
 
+  test(
+    "a placed triangle is written with the placement in its corners, as a placed union's is read"
+  ):
+    val turned              = Placement(2, Vec3(0, 30, 10), Vec3(1, 0, 0))
+    val flat                = Triangle(Vec3.Zero, Vec3(1, 0, 0), Vec3(0, 1, 0))
+    def scene(shape: Shape) =
+      Scene(Camera(Vec3(0, 0, -5), Vec3.Zero), objects = List(SceneObject(shape, Surface())))
+    val text = SceneWriter.write(scene(Placed(flat, turned))).fold(fail(_), identity)
+    assertEquals(
+      SceneXml.parse(text, textures).map(_.objects),
+      Right(scene(flat.placed(turned)).objects)
+    )
+
   property("write(scene) tells exactly the smooth and textured mesh triangles it cannot write"):
     forAll(scene, Gen.listOf(meshTriangle), Gen.choose(0, 10)) { (s, meshes, at) =>
       val mixed = s.copy(objects = s.objects.take(at) ++ meshes ++ s.objects.drop(at))

@@ -89,12 +89,11 @@ enum Glow:
 
   /** This glow where `placement` takes its shape. */
   def placed(placement: tracer.math.Placement): Glow =
-    val t                  = placement.transform
-    def moved(f: Triangle) = Triangle(t.point(f.t0), t.point(f.t1), t.point(f.t2))
+    val t = placement.transform
     this match
       case Round(s)   => Round(Sphere(t.point(s.centre), s.radius * placement.scale))
-      case Flat(fs)   => Flat(fs.map(moved))
-      case Cuboid(fs) => Cuboid(fs.map(moved))
+      case Flat(fs)   => Flat(fs.map(_.placed(placement)))
+      case Cuboid(fs) => Cuboid(fs.map(_.placed(placement)))
       case Conical(c) =>
         val k = placement.scale
         Conical(Cone(t.point(c.base), c.baseRadius * k, t.point(c.cap), c.capRadius * k, c.open))
