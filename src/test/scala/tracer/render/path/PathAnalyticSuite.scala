@@ -210,6 +210,24 @@ class PathAnalyticSuite extends munit.FunSuite:
       IndexedSeq(true)
     )
 
+  /** Renders `scene` by next-event estimation alone, by the paths alone and by both (12 × 12
+    * pixels, 256 samples, `-r 3`), and asserts that it is lit and that the first and the last
+    * estimate the paths' picture: the difference of two independent estimates of the same
+    * picture has mean 0 over all pixels.
+    */
+  private def assertStrategiesAgree(scene: Scene)(using munit.Location): Unit =
+    val lights        = renderWith(scene, 12, 256, 3, PathTracer.Strategy.LightsOnly)
+    val paths         = renderWith(scene, 12, 256, 3, PathTracer.Strategy.PathsOnly)
+    val both          = renderWith(scene, 12, 256, 3, PathTracer.Strategy.Both)
+    val diff          = values(lights).zip(values(paths)).map(_ - _)
+    val (mean, error) = meanAndError(diff)
+    assert(Math.abs(mean) <= K * error, s"next-event-only minus path-only: $mean ± $error")
+    val (total, _) = meanAndError(values(both))
+    assert(total > 0.05, s"the scene is lit ($total)")
+    val diffBoth      = values(both).zip(values(paths)).map(_ - _)
+    val (mean2, err2) = meanAndError(diffBoth)
+    assert(Math.abs(mean2) <= K * err2, s"combined minus path-only: $mean2 ± $err2")
+
   test("next-event-only and path-only estimates of glowing spheres, triangles and the sky agree"):
     val floor = PathScenes.square(Vec3(-3, -1, -3), Vec3(0, 0, 6), Vec3(6, 0, 0))
     val lamp  = Triangle(Vec3(-1, 1.5, 0.5), Vec3(1, 1.5, 0.5), Vec3(0, 1.5, -1))
@@ -226,18 +244,7 @@ class PathAnalyticSuite extends munit.FunSuite:
         glowing(lamp, 3, 0)
       )
     )
-    val lights = renderWith(scene, 12, 256, 3, PathTracer.Strategy.LightsOnly)
-    val paths  = renderWith(scene, 12, 256, 3, PathTracer.Strategy.PathsOnly)
-    val both   = renderWith(scene, 12, 256, 3, PathTracer.Strategy.Both)
-    // The difference of two independent estimates of the same picture: mean 0 over all pixels.
-    val diff          = values(lights).zip(values(paths)).map(_ - _)
-    val (mean, error) = meanAndError(diff)
-    assert(Math.abs(mean) <= K * error, s"next-event-only minus path-only: $mean ± $error")
-    val (total, _) = meanAndError(values(both))
-    assert(total > 0.05, s"the scene is lit ($total)")
-    val diffBoth      = values(both).zip(values(paths)).map(_ - _)
-    val (mean2, err2) = meanAndError(diffBoth)
-    assert(Math.abs(mean2) <= K * err2, s"combined minus path-only: $mean2 ± $err2")
+    assertStrategiesAgree(scene)
 
   // Glowing boxes, cylinders, cones and placed shapes are drawn by next-event estimation too
   // (Emitters.glow): drawn by it alone or found by the paths alone, their light is the same.
@@ -274,17 +281,7 @@ class PathAnalyticSuite extends munit.FunSuite:
     )
     val emitters = Emitters(scene, World(scene))
     assertEquals((2 to 7).map(emitters.samples), (2 to 7).map(_ => true))
-    val lights        = renderWith(scene, 12, 256, 3, PathTracer.Strategy.LightsOnly)
-    val paths         = renderWith(scene, 12, 256, 3, PathTracer.Strategy.PathsOnly)
-    val both          = renderWith(scene, 12, 256, 3, PathTracer.Strategy.Both)
-    val diff          = values(lights).zip(values(paths)).map(_ - _)
-    val (mean, error) = meanAndError(diff)
-    assert(Math.abs(mean) <= K * error, s"next-event-only minus path-only: $mean ± $error")
-    val (total, _) = meanAndError(values(both))
-    assert(total > 0.05, s"the scene is lit ($total)")
-    val diffBoth      = values(both).zip(values(paths)).map(_ - _)
-    val (mean2, err2) = meanAndError(diffBoth)
-    assert(Math.abs(mean2) <= K * err2, s"combined minus path-only: $mean2 ± $err2")
+    assertStrategiesAgree(scene)
 
   // What drawing a small lamp by next-event estimation is for: a wall lit by a small glowing box
   // out of view, at 4 samples a pixel, is nearly smooth; found by the paths alone it is speckled.

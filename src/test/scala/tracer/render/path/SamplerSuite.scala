@@ -141,6 +141,34 @@ class SamplerSuite extends ScalaCheckSuite:
         assertEqualsDouble(fanEmitters.density(0, p, q, leaf), s.density, 1e-6 * s.density)
     }
 
+  /** The property that a sample of `emitters` (one for each of `shapes`, in order, nothing else)
+    * drawn from a point in front of them lands on its shape at its distance, and has the density
+    * that `density` gives for the point and the shape's normal there.
+    */
+  private def landsAsDensitySays(shapes: List[Shape], emitters: Emitters) =
+    forAll(
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-3.0, 3.0),
+      Gen.choose(-4.0, 0.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0),
+      Gen.choose(0.0, 1.0)
+    ) { (x, y, z, choice, u1, u2) =>
+      val p = Vec3(x, y, z)
+      val s = emitters.sample(p, choice, u1, u2)
+      if !s.dark then
+        // Each emitter is chosen by its equal share of the choice.
+        val k   = Math.min(shapes.length - 1, (choice * shapes.length).toInt)
+        val ray = Ray(p, s.direction)
+        assertEqualsDouble(Shape.distance(shapes(k), ray), s.distance, 1e-9 * s.distance)
+        val hit = Shape.hitAt(shapes(k), ray, s.distance)
+        assertEqualsDouble(
+          emitters.density(k, p, hit.point, hit.leaf, hit.normal),
+          s.density,
+          1e-6 * s.density
+        )
+    }
+
   // A glowing box, and a box placed (turned and scaled) beside it: one emitter each, drawn by area
   // over their six faces as Mitsuba draws its cube; a hit's density from its normal there.
   private val lamp   = Box(Vec3(-1, 0.5, 1.5), Vec3(0.5, 1, 2.5))
@@ -148,8 +176,8 @@ class SamplerSuite extends ScalaCheckSuite:
     Box(Vec3(-0.5, -0.2, -0.4), Vec3(0.5, 0.2, 0.4)),
     Placement(1.5, Vec3(20, 35, -10), Vec3(1.5, -1, 2))
   )
-  private val boxes        = List(lamp, turned)
-  private val glowingBoxes =
+  private val boxes: List[Shape] = List(lamp, turned)
+  private val glowingBoxes       =
     Scene(
       Camera(Vec3(0, 0, -5), Vec3.Zero),
       Colour.Black,
@@ -175,31 +203,10 @@ class SamplerSuite extends ScalaCheckSuite:
       assert(t.normal.dot(centre - Vec3(-0.25, 0.75, 2)) > 0, s"$t faces in")
 
   property("a glowing box's sample density is what density() gives for the point it reaches"):
-    forAll(
-      Gen.choose(-3.0, 3.0),
-      Gen.choose(-3.0, 3.0),
-      Gen.choose(-4.0, 0.0),
-      Gen.choose(0.0, 1.0),
-      Gen.choose(0.0, 1.0),
-      Gen.choose(0.0, 1.0)
-    ) { (x, y, z, choice, u1, u2) =>
-      val p = Vec3(x, y, z)
-      val s = boxEmitters.sample(p, choice, u1, u2)
-      if !s.dark then
-        // Two emitters, chosen by halves of the choice.
-        val k   = if choice < 0.5 then 0 else 1
-        val ray = Ray(p, s.direction)
-        assertEqualsDouble(Shape.distance(boxes(k), ray), s.distance, 1e-9 * s.distance)
-        val hit = Shape.hitAt(boxes(k), ray, s.distance)
-        assertEqualsDouble(
-          boxEmitters.density(k, p, hit.point, hit.leaf, hit.normal),
-          s.density,
-          1e-6 * s.density
-        )
-    }
+    landsAsDensitySays(boxes, boxEmitters)
 
   // Glowing cylinders and cones: one emitter each over the side and, closed, both discs.
-  private val frustums = List(
+  private val frustums: List[Shape] = List(
     Cylinder(Vec3(-1, 0.5, 1.5), Vec3(-0.4, 1.5, 2.5), 0.4),
     Placed(
       Cone(Vec3(0, 0, 0), 0.5, Vec3(0, 1, 0), 0.2, open = true),
@@ -239,28 +246,7 @@ class SamplerSuite extends ScalaCheckSuite:
     assertEqualsDouble(heights.sum / n, exact, 1e-6)
 
   property("a glowing cylinder's or cone's sample density is what density() gives where it lands"):
-    forAll(
-      Gen.choose(-3.0, 3.0),
-      Gen.choose(-3.0, 3.0),
-      Gen.choose(-4.0, 0.0),
-      Gen.choose(0.0, 1.0),
-      Gen.choose(0.0, 1.0),
-      Gen.choose(0.0, 1.0)
-    ) { (x, y, z, choice, u1, u2) =>
-      val p = Vec3(x, y, z)
-      val s = frustumEmitters.sample(p, choice, u1, u2)
-      if !s.dark then
-        // Three emitters, chosen by thirds of the choice.
-        val k   = Math.min(2, (choice * 3).toInt)
-        val ray = Ray(p, s.direction)
-        assertEqualsDouble(Shape.distance(frustums(k), ray), s.distance, 1e-9 * s.distance)
-        val hit = Shape.hitAt(frustums(k), ray, s.distance)
-        assertEqualsDouble(
-          frustumEmitters.density(k, p, hit.point, hit.leaf, hit.normal),
-          s.density,
-          1e-6 * s.density
-        )
-    }
+    landsAsDensitySays(frustums, frustumEmitters)
 
   test("a sphere sampled by solid angle: the estimate of its solid angle is exact"):
     // ∫ over the cone 1 dω = 2π(1 − cos θmax); each sample's 1/density (choice removed) is that.
