@@ -41,10 +41,11 @@ class WorldBench:
     // The rays that leave the surfaces the camera sees over a finer grid, as shading reflects
     // them (from ε off the surface): most of a 4K mesh render's walks are such rays, and two in
     // three of them meet nothing (docs/performance.md, round 44).
-    val fine    = Projection(scene.camera, CameraConfig.forCamera(scene.camera, 128))
+    val grid    = CameraConfig.forCamera(scene.camera, 128)
+    val fine    = Projection(scene.camera, grid)
     val leaving = for
-      j <- 0 until 72
-      i <- 0 until 128
+      j <- 0 until grid.rows
+      i <- 0 until grid.columns
       ray = fine.ray(i + 0.5, j + 0.5)
       hit <- Option(world.nearest(ray, query)).filter(_ >= 0)
     yield
@@ -54,17 +55,18 @@ class WorldBench:
       Ray(at.point + n * Shading.Epsilon, Refraction.reflect(ray.direction, n))
     mirrored = Array.tabulate(1024)(i => leaving(i * leaving.size / 1024))
 
-  private def next(): Ray =
+  private def next(): Ray = nextOf(rays)
+
+  /** The next of the 1024 rays `from`, one step of the cursor a call. */
+  private def nextOf(from: Array[Ray]): Ray =
     index = (index + 1) & 1023
-    rays(index)
+    from(index)
 
   /** The nearest hit through the hierarchy. */
   @Benchmark def nearest: Int = world.nearest(next(), query)
 
   /** The nearest hit of a ray leaving a surface the camera sees (a mirrored ray). */
-  @Benchmark def reflected: Int =
-    index = (index + 1) & 1023
-    world.nearest(mirrored(index), query)
+  @Benchmark def reflected: Int = world.nearest(nextOf(mirrored), query)
 
   /** The hierarchy alone, its 4-wide tree (what `nearest` walks). */
   @Benchmark def bvhWide: Int =
