@@ -44,16 +44,21 @@ class WorldBench:
     val grid    = CameraConfig.forCamera(scene.camera, 128)
     val fine    = Projection(scene.camera, grid)
     val leaving = for
-      j <- 0 until grid.rows
-      i <- 0 until grid.columns
-      ray = fine.ray(i + 0.5, j + 0.5)
-      hit <- Option(world.nearest(ray, query)).filter(_ >= 0)
-    yield
-      val shape = scene.objects(hit).shape
-      val at    = Shape.hitAt(shape, ray, query.distance)
-      val n     = at.normal
-      Ray(at.point + n * Shading.Epsilon, Refraction.reflect(ray.direction, n))
+      j      <- 0 until grid.rows
+      i      <- 0 until grid.columns
+      mirror <- mirrorOf(scene, fine.ray(i + 0.5, j + 0.5))
+    yield mirror
     mirrored = Array.tabulate(1024)(i => leaving(i * leaving.size / 1024))
+
+  /** `ray` mirrored at its nearest hit in `scene`, from ε off the surface, as shading reflects it
+    * about a flat surface's normal; none when it meets nothing.
+    */
+  private def mirrorOf(scene: Scene, ray: Ray): Option[Ray] =
+    val hit = world.nearest(ray, query)
+    Option.when(hit >= 0) {
+      val at = Shape.hitAt(scene.objects(hit).shape, ray, query.distance)
+      Ray(at.point + at.normal * Shading.Epsilon, Refraction.reflect(ray.direction, at.normal))
+    }
 
   private def next(): Ray = nextOf(rays)
 
