@@ -25,10 +25,10 @@ class WorldBench:
   var world: World     = null // nosemgrep: no-null — set by setup() before any benchmark
   var query: Query     = null // nosemgrep: no-null — set by setup() before any benchmark
   var rays: Array[Ray] = null // nosemgrep: no-null — set by setup() before any benchmark
+  var bvh: Bvh         = null // nosemgrep: no-null — set by setup() before any benchmark
+  var index            = 0
   // Why: as `rays`: 1024 mirrored rays, leaving surfaces the camera sees.
   var mirrored: Array[Ray] = null // nosemgrep: no-null — set by setup() before any benchmark
-  var bvh: Bvh             = null // nosemgrep: no-null — set by setup() before any benchmark
-  var index                = 0
 
   @Setup def setup(): Unit =
     val scene: Scene = BenchScenes.scene(sceneName)
