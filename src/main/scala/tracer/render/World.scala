@@ -47,7 +47,11 @@ final class World(
     else if eyeRays > 0 then eyeRays
     else Long.MaxValue
   private val surfaces: Array[Surface] = objects.map(_.surface)
-  private val bvh                      = Bvh(shapes.toIndexedSeq, pool, rays = rays)
+  // Perf: whether each shape shows more than one surface, asked once: a `Vector`'s isEmpty on
+  // every hit went through `lengthCompare` and `length` calls the JIT left out of line (1% of a
+  // 3840×2160 mesh-20000 run's processor samples; docs/performance.md, round 48).
+  private val leafy: Array[Boolean] = objects.map(_.leafSurfaces.nonEmpty)
+  private val bvh                   = Bvh(shapes.toIndexedSeq, pool, rays = rays)
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
 
@@ -343,10 +347,11 @@ final class World(
   def surface(i: Int): Surface = surfaces(i)
 
   /** The surface that primitive `leaf` of shape `i` shows (see [[tracer.geometry.Hit.leaf]]). */
-  def surface(i: Int, leaf: Int): Surface = objects(i).surfaceOf(leaf)
+  def surface(i: Int, leaf: Int): Surface =
+    if leafy(i) then objects(i).surfaceOf(leaf) else surfaces(i)
 
   /** True when shape `i` shows more than one surface, so a hit must say which leaf it is on. */
-  def hasLeafSurfaces(i: Int): Boolean = objects(i).leafSurfaces.nonEmpty
+  def hasLeafSurfaces(i: Int): Boolean = leafy(i)
 
   /** Scratch space for one thread's queries ([[nearest]], [[occluded]]). */
   def newQuery(): Query = Query()
