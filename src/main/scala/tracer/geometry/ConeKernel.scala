@@ -62,7 +62,9 @@ private[geometry] object ConeKernel:
     * increasing order) with the ray's origin w from the base and its heights along the axis: wa
     * of the origin, da of the direction.
     *
-    * Perf: `inline` with an inline body: the values stay local doubles (as Bvh.walk).
+    * Perf: `inline` with an inline body: the values stay local doubles (as Bvh.walk). For an axis
+    * along x, y or z ([[Cone.axial]]) the products with its zero coordinates are left out, which
+    * changes no root (below).
     */
   private inline def coneRoots[A](
       c: Cone,
@@ -73,17 +75,55 @@ private[geometry] object ConeKernel:
       dy: Double,
       dz: Double
   )(inline body: (Int, Double, Double, Double, Double, Double, Double, Double) => A): A =
-    val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
-    val wx  = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
-    val wa  = wx * ax + wy * ay + wz * az
-    val da  = dx * ax + dy * ay + dz * az
-    val wrx = wx - ax * wa; val wry = wy - ay * wa; val wrz = wz - az * wa
-    val drx = dx - ax * da; val dry = dy - ay * da; val drz = dz - az * da
-    val k   = c.slope
-    val rO  = c.baseRadius + k * wa
-    val a   = (drx * drx + dry * dry + drz * drz) - k * k * da * da
-    val b   = 2 * ((wrx * drx + wry * dry + wrz * drz) - k * rO * da)
-    val q   = (wrx * wrx + wry * wry + wrz * wrz) - rO * rO
+    val wx = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
+    val k  = c.axial
+    if k < 0 then
+      val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
+      val wa  = wx * ax + wy * ay + wz * az
+      val da  = dx * ax + dy * ay + dz * az
+      val wrx = wx - ax * wa; val wry = wy - ay * wa; val wrz = wz - az * wa
+      val drx = dx - ax * da; val dry = dy - ay * da; val drz = dz - az * da
+      quadratic(c, wa, da, wx, wy, wz)(
+        drx * drx + dry * dry + drz * drz,
+        wrx * drx + wry * dry + wrz * drz,
+        wrx * wrx + wry * wry + wrz * wrz
+      )(body)
+    else
+      // Why exact: with the axis s·e_k (s = ±1, the rest 0), the general arithmetic above gives wa
+      // = s·w_k and da = s·d_k, and w's and d's parts across the axis (w_u, w_v) and (d_u, d_v)
+      // with 0 at k, all equal as numbers (a product with 0 is ±0, which adds nothing to a
+      // non-zero; only zeros' signs may differ). Its sums of squares have the same bits (a square
+      // is never −0, so the term at k adds +0; the others come in the same order); its sum of
+      // products, b, may differ only in a zero's sign, which no step below tells apart (b != 0,
+      // b · b, b >= 0, and b + root). And a, q and both roots are the same bits, as are the
+      // checks on wa and da the callers make (comparisons, z − wa, da != 0).
+      val s  = if k == 0 then c.axis.x else if k == 1 then c.axis.y else c.axis.z
+      val wa = s * (if k == 0 then wx else if k == 1 then wy else wz)
+      val da = s * (if k == 0 then dx else if k == 1 then dy else dz)
+      val wu = if k == 0 then wy else wx; val wv = if k == 2 then wy else wz
+      val du = if k == 0 then dy else dx; val dv = if k == 2 then dy else dz
+      quadratic(c, wa, da, wx, wy, wz)(du * du + dv * dv, wu * du + wv * dv, wu * wu + wv * wv)(
+        body
+      )
+
+  /** [[coneRoots]]' quadratic, given the squared length of d across the axis (`dd`), the product
+    * of w's and d's parts across it (`wd`) and the squared length of w's (`ww`).
+    */
+  private inline def quadratic[A](
+      c: Cone,
+      wa: Double,
+      da: Double,
+      wx: Double,
+      wy: Double,
+      wz: Double
+  )(dd: Double, wd: Double, ww: Double)(
+      inline body: (Int, Double, Double, Double, Double, Double, Double, Double) => A
+  ): A =
+    val k  = c.slope
+    val rO = c.baseRadius + k * wa
+    val a  = dd - k * k * da * da
+    val b  = 2 * (wd - k * rO * da)
+    val q  = ww - rO * rO
     // The quadratic's real roots in increasing order (Solids.quadratic).
     // Why: zero, one or two roots, set by the branches below.
     var roots = 0

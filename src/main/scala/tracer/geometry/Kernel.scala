@@ -395,13 +395,27 @@ object Kernel:
       val margin = if c.open then Solids.InsideTolerance else -Solids.InsideTolerance
       val wx     = px - c.base.x; val wy = py - c.base.y; val wz = pz - c.base.z
       val a      = c.axis
-      val z      = wx * a.x + wy * a.y + wz * a.z
-      val r      = c.baseRadius + c.slope * z
-      val scale  = Math.max(c.baseRadius, c.capRadius)
-      val along  = z / c.height
-      val rx     = wx - a.x * z; val ry  = wy - a.y * z; val rz  = wz - a.z * z
+      val k      = c.axial
+      // Perf: for an axis along x, y or z the products with its zero coordinates are left out: z
+      // and r are the same numbers, the squared distance from the axis the same bits, so every
+      // comparison is the same (the argument of ConeKernel.coneRoots).
+      val z =
+        if k < 0 then wx * a.x + wy * a.y + wz * a.z
+        else if k == 0 then a.x * wx
+        else if k == 1 then a.y * wy
+        else a.z * wz
+      val across =
+        if k < 0 then
+          val rx = wx - a.x * z; val ry = wy - a.y * z; val rz = wz - a.z * z
+          rx * rx + ry * ry + rz * rz
+        else
+          val u = if k == 0 then wy else wx; val v = if k == 2 then wy else wz
+          u * u + v * v
+      val r     = c.baseRadius + c.slope * z
+      val scale = Math.max(c.baseRadius, c.capRadius)
+      val along = z / c.height
       along >= -margin && along <= 1 + margin &&
-      (rx * rx + ry * ry + rz * rz) / (scale * scale) <= (r * r) / (scale * scale) + margin
+      across / (scale * scale) <= (r * r) / (scale * scale) + margin
     case t: Torus =>
       val ring = Math.sqrt(px * px + pz * pz) - t.major
       ring * ring + py * py <= t.minor * t.minor

@@ -199,6 +199,54 @@ class KernelProperties extends ScalaCheckSuite:
       ps.foreach(p => assertEquals(Kernel.inside(s, p.x, p.y, p.z), Shape.inside(s, p), s"$s $p"))
     }
 
+  property("cones along an axis: their shortcut's crossings and inside tests, bit for bit"):
+    // The shortcut of Cone.axial leaves out products with zeros; only zeros' signs could tell.
+    // So: rays from the axis, from the discs' planes and from the grid, along the axis, across
+    // it and anywhere, and points on the axis, on the discs and on the side.
+    val axial = for
+      b    <- gridPoint
+      k    <- Gen.choose(0, 2)
+      s    <- Gen.oneOf(1.0, -1.0)
+      h    <- Gen.oneOf(Gen.choose(1, 3).map(_.toDouble), size)
+      r0   <- Gen.oneOf(Gen.const(0.0), Gen.const(1.0), size)
+      r1   <- Gen.oneOf(Gen.const(1.0), size)
+      open <- Gen.oneOf(true, false)
+    yield
+      val axis = Vec3(if k == 0 then s else 0, if k == 1 then s else 0, if k == 2 then s else 0)
+      Cone(b, r0, b + axis * h, r1, open)
+    def on(c: Cone): Gen[Vec3] =
+      val a = c.axis
+      // Across the axis: the unit vector along the next axis round.
+      val across = Vec3(a.z.abs, a.x.abs, a.y.abs)
+      for
+        along <- Gen.oneOf(Gen.const(0.0), Gen.const(c.height), Gen.choose(-1.0, 3.0))
+        out   <- Gen.oneOf(Gen.const(0.0), Gen.const(c.baseRadius), Gen.choose(-2.0, 2.0))
+      yield c.base + a * along + across * out
+    val axes  = Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3.UnitZ, -Vec3.UnitX, -Vec3.UnitY, -Vec3.UnitZ)
+    val cases = for
+      c  <- axial
+      os <- Gen.listOfN(20, Gen.oneOf(on(c), gridPoint, point))
+      ds <- Gen.listOfN(20, Gen.oneOf(axes, unitVec))
+    yield (c, os.zip(ds).map(Ray(_, _)))
+    forAll(cases) { (c, rays) =>
+      rays.foreach { r =>
+        assertEquals(collected(c, r), reference(c, r), s"$c $r")
+        assertEquals(
+          Kernel.inside(c, r.origin.x, r.origin.y, r.origin.z),
+          Shape.inside(c, r.origin)
+        )
+        val o = r.origin
+        val d = r.direction
+        val b = CrossingBuffer()
+        assertEquals(
+          bits(Kernel.distance(c, o.x, o.y, o.z, d.x, d.y, d.z, b)),
+          bits(Shape.distance(c, r)),
+          s"$c $r"
+        )
+      }
+      assert(c.axial >= 0, c)
+    }
+
   property("hitAt is the first crossing: its t, point, normal facing the ray, leaf and side"):
     forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
       rays.foreach { r =>
