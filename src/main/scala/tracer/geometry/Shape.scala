@@ -480,14 +480,14 @@ final case class Cone(
   /** How fast the radius grows along the axis: (capRadius − baseRadius) / height. */
   val slope: Double = (capRadius - baseRadius) / height
 
-  /** 0, 1 or 2 when the axis is exactly ±x, ±y or ±z (its other two coordinates 0), else −1: the
-    * kernel's tests then skip the products with the zero coordinates, to the same results
-    * ([[ConeKernel]]).
+  /** 0, 1 or 2 when the axis is exactly ±x, ±y or ±z (one coordinate ±1, the others 0), else
+    * −1: the kernel's tests then skip the products with the zero coordinates, to the same
+    * results ([[ConeKernel]]).
     */
   private[geometry] val axial: Int =
-    if axis.y == 0 && axis.z == 0 then 0
-    else if axis.x == 0 && axis.z == 0 then 1
-    else if axis.x == 0 && axis.y == 0 then 2
+    if Math.abs(axis.x) == 1 && axis.y == 0 && axis.z == 0 then 0
+    else if axis.x == 0 && Math.abs(axis.y) == 1 && axis.z == 0 then 1
+    else if axis.x == 0 && axis.y == 0 && Math.abs(axis.z) == 1 then 2
     else -1
 
 /** Constructors of cylinders, which are [[Cone]]s with equal radii. */
