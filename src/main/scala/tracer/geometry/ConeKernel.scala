@@ -77,7 +77,8 @@ private[geometry] object ConeKernel:
   )(inline body: (Int, Double, Double, Double, Double, Double, Double, Double) => A): A =
     val wx = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
     val k  = c.axial
-    if k < 0 then
+    // An offset from the base that overflows takes the general arithmetic, whose 0 · ∞ gives NaN.
+    if k < 0 || !(Math.abs(wx) + Math.abs(wy) + Math.abs(wz) < Double.PositiveInfinity) then
       val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
       val wa  = wx * ax + wy * ay + wz * az
       val da  = dx * ax + dy * ay + dz * az
@@ -89,8 +90,8 @@ private[geometry] object ConeKernel:
         wrx * wrx + wry * wry + wrz * wrz
       )(body)
     else
-      // Why exact: with the axis s·e_k (s = ±1, the rest 0), the general arithmetic above gives wa
-      // = s·w_k and da = s·d_k, and w's and d's parts across the axis (w_u, w_v) and (d_u, d_v)
+      // Why exact: with the axis s·e_k (s = ±1, the rest 0) and w finite, the general arithmetic
+      // above gives wa = s·w_k and da = s·d_k, and w's and d's parts across the axis (w_u, w_v) and (d_u, d_v)
       // with 0 at k, all equal as numbers (a product with 0 is ±0, which adds nothing to a
       // non-zero; only zeros' signs may differ). Its sums of squares have the same bits (a square
       // is never −0, so the term at k adds +0; the others come in the same order); its sum of

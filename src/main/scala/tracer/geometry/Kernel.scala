@@ -395,10 +395,13 @@ object Kernel:
       val margin = if c.open then Solids.InsideTolerance else -Solids.InsideTolerance
       val wx     = px - c.base.x; val wy = py - c.base.y; val wz = pz - c.base.z
       val a      = c.axis
-      val k      = c.axial
       // Perf: for an axis along x, y or z the products with its zero coordinates are left out: z
       // and r are the same numbers, the squared distance from the axis the same bits, so every
-      // comparison is the same (the argument of ConeKernel.coneRoots).
+      // comparison is the same (the argument of ConeKernel.coneRoots; an offset w that overflows
+      // takes the general arithmetic there and here).
+      val k =
+        if Math.abs(wx) + Math.abs(wy) + Math.abs(wz) < Double.PositiveInfinity then c.axial
+        else -1
       val z =
         if k < 0 then wx * a.x + wy * a.y + wz * a.z
         else if k == 0 then a.x * wx

@@ -247,6 +247,31 @@ class KernelProperties extends ScalaCheckSuite:
       assert(c.axial >= 0, c)
     }
 
+  test(
+    "a cone along an axis, from an origin whose offset from its base overflows, as the reference"
+  ):
+    // A reviewer's counterexamples to the shortcut without its finiteness check: the general
+    // arithmetic's 0 · ∞ makes NaN and no crossing, where the shortcut found two, and an inside
+    // test that said true.
+    val far = Cone(Vec3(-1e308, 0, 0), 1e200, Vec3(-1e308, 0, 1), 1e200)
+    val ray = Ray(Vec3(1e308, 0, -1), Vec3.UnitZ)
+    assertEquals(far.axial, 2)
+    assertEquals(collected(far, ray), reference(far, ray))
+    assertEquals(
+      bits(Kernel.distance(far, 1e308, 0, -1, 0, 0, 1, CrossingBuffer())),
+      bits(Shape.distance(far, ray))
+    )
+    val thin =
+      Cone(
+        Vec3(-1e308, 0, 0),
+        0,
+        Vec3(-1e308, 0, 1),
+        java.lang.Double.longBitsToDouble(0x1e56a09e667d4a38L),
+        open = true
+      )
+    val p = Vec3(1e308, 0, 1 + 5e-11)
+    assertEquals(Kernel.inside(thin, p.x, p.y, p.z), Shape.inside(thin, p))
+
   property("hitAt is the first crossing: its t, point, normal facing the ray, leaf and side"):
     forAll(shape, Gen.listOfN(20, ray)) { (s, rays) =>
       rays.foreach { r =>
