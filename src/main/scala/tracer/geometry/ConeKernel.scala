@@ -76,9 +76,8 @@ private[geometry] object ConeKernel:
       dz: Double
   )(inline body: (Int, Double, Double, Double, Double, Double, Double, Double) => A): A =
     val wx = ox - c.base.x; val wy = oy - c.base.y; val wz = oz - c.base.z
-    val k  = c.axial
-    // An offset from the base that overflows takes the general arithmetic, whose 0 · ∞ gives NaN.
-    if k < 0 || !(Math.abs(wx) + Math.abs(wy) + Math.abs(wz) < Double.PositiveInfinity) then
+    val k  = shortcut(c, wx, wy, wz)
+    if k < 0 then
       val ax  = c.axis.x; val ay      = c.axis.y; val az      = c.axis.z
       val wa  = wx * ax + wy * ay + wz * az
       val da  = dx * ax + dy * ay + dz * az
@@ -98,14 +97,33 @@ private[geometry] object ConeKernel:
       // products, b, may differ only in a zero's sign, which no step below tells apart (b != 0,
       // b · b, b >= 0, and b + root). And a, q and both roots are the same bits, as are the
       // checks on wa and da the callers make (comparisons, z − wa, da != 0).
-      val s  = if k == 0 then c.axis.x else if k == 1 then c.axis.y else c.axis.z
-      val wa = s * (if k == 0 then wx else if k == 1 then wy else wz)
-      val da = s * (if k == 0 then dx else if k == 1 then dy else dz)
-      val wu = if k == 0 then wy else wx; val wv = if k == 2 then wy else wz
-      val du = if k == 0 then dy else dx; val dv = if k == 2 then dy else dz
-      quadratic(c, wa, da, wx, wy, wz)(du * du + dv * dv, wu * du + wv * dv, wu * wu + wv * wv)(
-        body
-      )
+      val s  = along(k, c.axis.x, c.axis.y, c.axis.z)
+      val wa = s * along(k, wx, wy, wz)
+      val da = s * along(k, dx, dy, dz)
+      across(k, wx, wy, wz) { (wu, wv) =>
+        across(k, dx, dy, dz) { (du, dv) =>
+          quadratic(c, wa, da, wx, wy, wz)(du * du + dv * dv, wu * du + wv * dv, wu * wu + wv * wv)(
+            body
+          )
+        }
+      }
+
+  /** The axis's index ([[Cone.axial]]) when the shortcut that leaves out the products with its
+    * zero coordinates applies to the offset w from the base, else −1: also when w overflows, where
+    * the general arithmetic's 0 · ∞ gives NaN (and so no crossing, and not inside).
+    */
+  private[geometry] inline def shortcut(c: Cone, wx: Double, wy: Double, wz: Double): Int =
+    if Math.abs(wx) + Math.abs(wy) + Math.abs(wz) < Double.PositiveInfinity then c.axial else -1
+
+  /** Coordinate `k` (0, 1 or 2) of (x, y, z). */
+  private[geometry] inline def along(k: Int, x: Double, y: Double, z: Double): Double =
+    if k == 0 then x else if k == 1 then y else z
+
+  /** Runs `body` on the two coordinates of (x, y, z) across axis `k`, in x, y, z order. */
+  private[geometry] inline def across[A](k: Int, x: Double, y: Double, z: Double)(
+      inline body: (Double, Double) => A
+  ): A =
+    body(if k == 0 then y else x, if k == 2 then y else z)
 
   /** [[coneRoots]]' quadratic, given the squared length of d across the axis (`dd`), the product
     * of w's and d's parts across it (`wd`) and the squared length of w's (`ww`).

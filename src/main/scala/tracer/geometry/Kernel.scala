@@ -397,23 +397,17 @@ object Kernel:
       val a      = c.axis
       // Perf: for an axis along x, y or z the products with its zero coordinates are left out: z
       // and r are the same numbers, the squared distance from the axis the same bits, so every
-      // comparison is the same (the argument of ConeKernel.coneRoots; an offset w that overflows
-      // takes the general arithmetic there and here).
-      val k =
-        if Math.abs(wx) + Math.abs(wy) + Math.abs(wz) < Double.PositiveInfinity then c.axial
-        else -1
+      // comparison is the same (the argument of ConeKernel.coneRoots, under the same condition:
+      // ConeKernel.shortcut).
+      val k = ConeKernel.shortcut(c, wx, wy, wz)
       val z =
         if k < 0 then wx * a.x + wy * a.y + wz * a.z
-        else if k == 0 then a.x * wx
-        else if k == 1 then a.y * wy
-        else a.z * wz
+        else ConeKernel.along(k, a.x, a.y, a.z) * ConeKernel.along(k, wx, wy, wz)
       val across =
         if k < 0 then
           val rx = wx - a.x * z; val ry = wy - a.y * z; val rz = wz - a.z * z
           rx * rx + ry * ry + rz * rz
-        else
-          val u = if k == 0 then wy else wx; val v = if k == 2 then wy else wz
-          u * u + v * v
+        else ConeKernel.across(k, wx, wy, wz)((u, v) => u * u + v * v)
       val r     = c.baseRadius + c.slope * z
       val scale = Math.max(c.baseRadius, c.capRadius)
       val along = z / c.height
