@@ -20,6 +20,12 @@ final class Shading(world: World, mode: ShadingMode):
   private var red   = 0.0
   private var green = 0.0
   private var blue  = 0.0
+  // Perf: where the lights stand, three doubles each, and the shaded point's direction toward
+  // each light and its distance, four doubles each, filled by `lit` for all lights before any
+  // is used (see there).
+  private val lightPoints =
+    world.lights.iterator.flatMap(l => Iterator(l.location.x, l.location.y, l.location.z)).toArray
+  private val toward = new Array[Double](4 * world.lights.length)
 
   /** The colour seen along `ray`, allowing `depth` more reflections or refractions. */
   def colour(ray: Ray, depth: Int): Colour =
@@ -189,6 +195,21 @@ final class Shading(world: World, mode: ShadingMode):
     red = 0.0
     green = 0.0
     blue = 0.0
+    // Perf: each light's direction is a square root and three divisions, waited on by the rest
+    // of its light; computed for all lights first, in a loop whose turns do not depend on each
+    // other, the processor overlaps them (profiles of mesh-20000; docs/performance.md, round 50).
+    var j = 0
+    while j < world.lights.length do
+      val tx    = lightPoints(3 * j) - s0x
+      val ty    = lightPoints(3 * j + 1) - s0y
+      val tz    = lightPoints(3 * j + 2) - s0z
+      val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
+      // Equation 41; a light exactly at S0 shines straight along the normal.
+      toward(4 * j) = if reach > 0 then tx / reach else sx
+      toward(4 * j + 1) = if reach > 0 then ty / reach else sy
+      toward(4 * j + 2) = if reach > 0 then tz / reach else sz
+      toward(4 * j + 3) = reach
+      j += 1
     // Perf: a counted loop over the lights (see above).
     var k = 0
     while k < world.lights.length do
@@ -225,15 +246,11 @@ final class Shading(world: World, mode: ShadingMode):
       depth: Int
   ): Unit =
     val light = world.lights(k)
-    val tx    = light.location.x - s0x
-    val ty    = light.location.y - s0y
-    val tz    = light.location.z - s0z
-    val reach = Math.sqrt(tx * tx + ty * ty + tz * tz)
-    // Equation 41; a light exactly at S0 shines straight along the normal.
-    val sdx = if reach > 0 then tx / reach else sx
-    val sdy = if reach > 0 then ty / reach else sy
-    val sdz = if reach > 0 then tz / reach else sz
-    val cos = sx * sdx + sy * sdy + sz * sdz
+    val sdx   = toward(4 * k)
+    val sdy   = toward(4 * k + 1)
+    val sdz   = toward(4 * k + 2)
+    val reach = toward(4 * k + 3)
+    val cos   = sx * sdx + sy * sdy + sz * sdz
     // POV-Ray ignores a light behind the shading normal. A flat opaque surface shadows such a
     // point light by itself; transmitting surfaces, smooth normals and area lights (lit from
     // off-centre sub-lights) need the rule said out loud.
