@@ -24,8 +24,9 @@ private[render] object Hits:
   /** Writes into `query` (its `px` … `front`) the hit at distance `t` along the ray from
     * (ox, oy, oz) in unit direction (dx, dy, dz) on `shape`: as `Shape.hitAt(shape, ray, t)`
     * with `Shape.shadingNormal` of it (for a mesh, `Shape.hitOnFace` on the face the last
-    * nearest query found, `query.face`). A `t` at which a general shape has no crossing is a
-    * caller's bug: `IllegalArgumentException`, as from `Shape.hitAt`.
+    * nearest query found, `query.face`, its normal from the mesh's `tree` when it has one). A `t`
+    * at which a general shape has no crossing is a caller's bug: `IllegalArgumentException`, as
+    * from `Shape.hitAt`.
     */
   def record(
       shape: Shape,
@@ -36,7 +37,8 @@ private[render] object Hits:
       dy: Double,
       dz: Double,
       t: Double,
-      query: Query
+      query: Query,
+      tree: Option[MeshTree] = None
   ): Unit =
     // Perf: PrimaryRayBench (bytes per primary ray): the hit's values straight into the query.
     shape match
@@ -82,12 +84,18 @@ private[render] object Hits:
       case m: Mesh =>
         // Shape.hitOnFace: the face the kernel found (query.face) is the leaf; its plane's Pn is
         // the outward normal. A smooth face blends its corners' normals as its Triangle does.
-        // Perf: the face's normal derived from its corners (Mesh.plane), the mesh holding no
-        // array of planes.
+        // Perf: the face's normal from the mesh's tree, which holds the planes; derived from
+        // its corners (Mesh.plane) for a mesh without one, which holds no array of planes.
         val f = query.face
-        Mesh.plane(m.vertices, m.corners, f) { (nx, ny, nz, _) =>
-          facing(ox + dx * t, oy + dy * t, oz + dz * t, nx, ny, nz, f)(dx, dy, dz, query)
-        }
+        tree match
+          case Some(faces) =>
+            faces.faceNormal(f) { (nx, ny, nz) =>
+              facing(ox + dx * t, oy + dy * t, oz + dz * t, nx, ny, nz, f)(dx, dy, dz, query)
+            }
+          case None =>
+            Mesh.plane(m.vertices, m.corners, f) { (nx, ny, nz, _) =>
+              facing(ox + dx * t, oy + dy * t, oz + dz * t, nx, ny, nz, f)(dx, dy, dz, query)
+            }
         if m.smoothFace(f) then
           val tr = m.face(f)
           tr.cornerNormals match

@@ -103,6 +103,16 @@ final class MeshTree(
   /** The leaf-order number of the mesh's face `f` (the inverse of [[faceNumber]]). */
   private[render] def leafFace(f: Int): Int = leafOf(f)
 
+  /** The unit normal of the mesh's face `f` (its plane's Pn, with `Mesh.plane`'s bits), read from
+    * the tree's planes and passed to `body`.
+    *
+    * Perf: `inline` with an inline body, as `Mesh.plane`: three loads where the corners' cross
+    * product, its square root and three divisions were (docs/performance.md, round 50).
+    */
+  private[render] inline def faceNormal[A](f: Int)(inline body: (Double, Double, Double) => A): A =
+    val k = 4 * leafOf(f)
+    body(planes(k), planes(k + 1), planes(k + 2))
+
   /** The distance along the ray from (ox, oy, oz) in unit direction (dx, dy, dz) to the mesh's
     * nearest face at a t ≤ `limit` (+∞ when there is none), the face itself left in
     * `query.meshFace`: the lowest-numbered of the faces at that distance, as a loop over the faces

@@ -77,7 +77,7 @@ final class Shading(world: World, mode: ShadingMode):
     if i < 0 then set(world.background)
     else
       // The hit as Shape.hitAt and Shape.shadingNormal give it, in the query's fields.
-      Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query)
+      Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query, world.treeOf(i))
       mode match
         case ShadingMode.Quick => quick(i, dx, dy, dz)
         case ShadingMode.Full  => shade(i, dx, dy, dz, depth, insides)

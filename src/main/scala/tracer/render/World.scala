@@ -54,6 +54,11 @@ final class World(
   private val bvh                   = Bvh(shapes.toIndexedSeq, pool, rays = rays)
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
+  // Each shape's mesh tree (None for a shape that is not a mesh), found once.
+  private val trees: Array[Option[MeshTree]] = shapes.map {
+    case mesh: Mesh => bvh.meshTree(mesh)
+    case _          => None
+  }
 
   /** The lights, in document order. */
   val lights: IArray[Light] = IArray.from(scene.lights)
@@ -342,6 +347,11 @@ final class World(
 
   /** The shape with index `i`. */
   def shape(i: Int): Shape = shapes(i)
+
+  /** The tree of shape `i` when it is a mesh (the scene's meshes each have one), for its faces'
+    * planes ([[Hits.record]]).
+    */
+  private[render] def treeOf(i: Int): Option[MeshTree] = trees(i)
 
   /** The surface of shape `i` as a whole (for a CSG combination, the one that holds its `ior`). */
   def surface(i: Int): Surface = surfaces(i)

@@ -8,6 +8,7 @@ import tracer.geometry.{
   Cone,
   Csg,
   CsgOperation,
+  Mesh,
   Placed,
   Plane,
   Ray,
@@ -43,9 +44,28 @@ class HitsProperties extends ScalaCheckSuite:
     for c <- point; r <- size yield Sphere(c, r)
   )
 
+  // A mesh of a few faces on shared vertices, some of them smooth: its faces' normals come from
+  // its tree's planes, or from the corners when it has no tree.
+  private val mesh: Gen[Mesh] =
+    for
+      vertices <- Gen.listOfN(5, point)
+      faces    <- Gen
+        .listOfN(4, Gen.listOfN(3, Gen.choose(0, 4)))
+        .map(_.filter(c => Triangle.isProper(vertices(c(0)), vertices(c(1)), vertices(c(2)))))
+        .retryUntil(_.nonEmpty)
+      normals <- Gen.listOfN(5, unitVec)
+      smooth  <- Gen.listOfN(faces.length, Gen.oneOf(true, false))
+    yield Mesh(
+      IArray.from(vertices.flatMap(v => List(v.x, v.y, v.z))),
+      IArray.from(faces.flatten),
+      IArray.from(normals.flatMap(n => List(n.x, n.y, n.z))),
+      IArray.from(faces.zip(smooth).flatMap((c, s) => if s then c else List(-1, -1, -1)))
+    )
+
   private val shape: Gen[Shape] = Gen.frequency(
     4 -> (for c <- point; r <- size yield Sphere(c, r)),
     4 -> triangle,
+    3 -> mesh,
     1 -> (for n <- unitVec; d <- near yield Plane(n, d)),
     2 -> solid,
     1 -> (for r <- size; f <- Gen.choose(0.1, 0.8); s <- size; t <- point
@@ -86,15 +106,30 @@ class HitsProperties extends ScalaCheckSuite:
       val query = world.newQuery()
       val i     = world.nearest(ray, query)
       i < 0 || {
-        val t = query.distance
-        val o = ray.origin
-        val d = ray.direction
-        Hits.record(shape, o.x, o.y, o.z, d.x, d.y, d.z, t, query)
+        val t       = query.distance
+        val o       = ray.origin
+        val d       = ray.direction
         val hit     = Shape.hitAt(shape, ray, t)
         val shading = Shape.shadingNormal(shape, hit, ray)
-        same(hit.point, query.px, query.py, query.pz) &&
-        same(hit.normal, query.nx, query.ny, query.nz) &&
-        same(shading, query.sx, query.sy, query.sz) &&
-        hit.leaf == query.leaf && hit.front == query.front
+        // With the world's mesh tree (the shading's way) and without one.
+        List(world.treeOf(i), None).forall { tree =>
+          Hits.record(shape, o.x, o.y, o.z, d.x, d.y, d.z, t, query, tree)
+          same(hit.point, query.px, query.py, query.pz) &&
+          same(hit.normal, query.nx, query.ny, query.nz) &&
+          same(shading, query.sx, query.sy, query.sz) &&
+          hit.leaf == query.leaf && hit.front == query.front
+        }
       }
     }
+
+  test("a mesh in a world has a tree to take its faces' normals from"):
+    val corners = IArray(0.0, 0, 0, 1, 0, 0, 0, 1, 0)
+    val world   = World(
+      Scene(
+        Camera(Vec3(0, 0, -20), Vec3.Zero),
+        objects =
+          List(SceneObject(Sphere(Vec3.Zero, 1)), SceneObject(Mesh(corners, IArray(0, 1, 2))))
+      )
+    )
+    assert(world.treeOf(0).isEmpty)
+    assert(world.treeOf(1).isDefined)

@@ -189,7 +189,18 @@ object PathTracer:
         else
           // The hit as Shape.hitAt and Shape.shadingNormal give it (a mesh's on the face the query
           // found), written into the query's fields and read out at once: no Ray or Hit a vertex.
-          Hits.record(world.shape(i), ox, oy, oz, dx, dy, dz, query.distance, query)
+          Hits.record(
+            world.shape(i),
+            ox,
+            oy,
+            oz,
+            dx,
+            dy,
+            dz,
+            query.distance,
+            query,
+            world.treeOf(i)
+          )
           val px      = query.px
           val py      = query.py
           val pz      = query.pz
