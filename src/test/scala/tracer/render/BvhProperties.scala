@@ -9,6 +9,7 @@ import tracer.geometry.{
   Csg,
   CsgOperation,
   Cylinder,
+  Mesh,
   Placed,
   Plane,
   Ray,
@@ -30,6 +31,10 @@ class BvhProperties extends ScalaCheckSuite:
   private val gridPoint = for x <- Gen.choose(-4, 4); y <- Gen.choose(-4, 4); z <- Gen.choose(-4, 4)
   yield Vec3(x, y, z)
 
+  private lazy val plane: Gen[Shape] =
+    for n <- Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3(1, 1, 0)); d <- Gen.choose(-6, 6)
+    yield Plane.at(n, d)
+
   private val shape: Gen[Shape] = Gen.frequency(
     4 -> (for c <- point; r <- Gen.choose(0.05, 2.0) yield Sphere(c, r)),
     4 -> Gen.zip(point, point, point).retryUntil(Triangle.isProper.tupled).map(Triangle(_, _, _)),
@@ -37,8 +42,7 @@ class BvhProperties extends ScalaCheckSuite:
       .zip(gridPoint, gridPoint, gridPoint)
       .retryUntil(Triangle.isProper.tupled)
       .map(Triangle(_, _, _)),
-    1 -> (for n <- Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3(1, 1, 0)); d <- Gen.choose(-6, 6)
-    yield Plane.at(n, d))
+    1 -> plane
   )
 
   // The general route: version 3's solids, placed shapes and combinations, which the tree holds
@@ -87,6 +91,14 @@ class BvhProperties extends ScalaCheckSuite:
     Gen
       .listOfN(6, Gen.zip(gridPoint, gridPoint, gridPoint).retryUntil(Triangle.isProper.tupled))
       .map(ts => Csg(CsgOperation.Union, ts.map(Triangle(_, _, _)).toVector))
+  // A mesh of a few faces on grid points (its own tree, MeshTree).
+  private val mesh: Gen[Shape] =
+    Gen
+      .listOfN(8, Gen.zip(gridPoint, gridPoint, gridPoint).retryUntil(Triangle.isProper.tupled))
+      .map { ts =>
+        val corners = ts.flatMap((a, b, c) => List(a, b, c))
+        Mesh(IArray.from(corners.flatMap(v => List(v.x, v.y, v.z))), IArray.from(corners.indices))
+      }
   private val general: Gen[Shape] =
     Gen.frequency(3 -> box, 3 -> cone, 2 -> torus, 2 -> placed, 3 -> csg, 1 -> meshUnion)
 
@@ -107,7 +119,14 @@ class BvhProperties extends ScalaCheckSuite:
     2 -> anyTree(
       Gen.choose(0, 120).flatMap(n => Gen.listOfN(n, Gen.frequency(1 -> shape, 1 -> general)))
     ),
-    1 -> anyTree(Gen.choose(0, 60).flatMap(n => Gen.listOfN(n, general)))
+    1 -> anyTree(Gen.choose(0, 60).flatMap(n => Gen.listOfN(n, general))),
+    // One bounded shape, alone or over planes: a tree of one primitive (Bvh.nearestOfOne).
+    1 -> anyTree(
+      for
+        one    <- Gen.frequency(2 -> shape, 2 -> general, 2 -> mesh)
+        planes <- Gen.choose(0, 2).flatMap(Gen.listOfN(_, plane))
+      yield planes :+ one
+    )
   )
 
   /** Rays from anywhere, and axis-aligned rays from grid points (zero direction components). */
