@@ -52,5 +52,22 @@ final class Projection(camera: Camera, film: Film):
       if proper then vz / length else forward.z
     )
 
+  /** Writes the unit direction of the primary ray through the centre of each pixel (x, y), x
+    * from `from` until `until`, into `out` from 0, three doubles a pixel: [[direction]]`(x +
+    * 0.5, y + 0.5)`.
+    *
+    * Perf: a direction is a square root and three divisions, which the ray's walk waits on; made
+    * for a tile's row at once, in a loop whose turns do not depend on each other, the processor
+    * overlaps them (docs/performance.md, round 50).
+    */
+  def directions(from: Int, until: Int, y: Int, out: Array[Double]): Unit =
+    var x = from
+    while x < until do
+      val at = 3 * (x - from)
+      direction(x + 0.5, y + 0.5) { (dx, dy, dz) =>
+        out(at) = dx; out(at + 1) = dy; out(at + 2) = dz
+      }
+      x += 1
+
   /** The unit right, down and forward directions of the picture (Cr, Cd, c). */
   def basis: (Vec3, Vec3, Vec3) = (right, down, forward)

@@ -192,26 +192,45 @@ object Renderer:
 
     def rows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val shading = Shading(world, mode)
-      // Perf: each pixel a method call (encoded): the loops stay small, so the JIT compiles the
+      // Perf: each pixel a method call (aimed): the loops stay small, so the JIT compiles the
       // pixel once, not the loops on-stack and then again (docs/performance.md, round 9;
-      // RenderBench).
-      Tiles.foreach(config.columns, y, count)((x, row, i) => encoded(shading, x, row, at + i, out))
+      // RenderBench). One sample a pixel: the directions of a tile's row made first
+      // (Projection.directions).
+      if n == 1 then
+        val aims = new Array[Double](3 * Tiles.Width)
+        Tiles.runs(config.columns, y, count) { (from, until, row, i) =>
+          projection.directions(from, until, row, aims)
+          // Why: a counted loop over the run's columns.
+          var x = from
+          while x < until do
+            aimed(shading, x, at + i, out, aims, 3 * (x - from))
+            x += 1
+        }
+      else
+        Tiles.foreach(config.columns, y, count)((x, row, i) =>
+          sampledEncoded(shading, x, row, at + i, out)
+        )
 
     def linearRows(at: Int, y: Int, count: Int, out: PixelWriter): Unit =
       val shading = Shading(world, mode)
       Tiles.foreach(config.columns, y, count)((x, row, i) => linear(shading, x, row, at + i, out))
 
-    /** Pixel (x, y) of the picture, encoded, stored as (x, at) through `out`. */
-    private def encoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
-      if n == 1 then
-        // The common case: one sample a pixel, traced here (no loop in this method).
-        centre(shading, x, y)
-        store(x, at, out)(shading.r, shading.g, shading.b)
-      else sampledEncoded(shading, x, y, at, out)
-
-    /** [[encoded]] of a pixel of n × n samples (n > 1), out of line: its loops are not the common
-      * path's.
+    /** The one-sample pixel whose primary ray's direction is at `k` of `aims`, encoded, stored as
+      * (x, at) through `out`.
       */
+    private def aimed(
+        shading: Shading,
+        x: Int,
+        at: Int,
+        out: PixelWriter,
+        aims: Array[Double],
+        k: Int
+    ): Unit =
+      val o = projection.origin
+      shading.trace(o.x, o.y, o.z, aims(k), aims(k + 1), aims(k + 2), config.depth, eyeInsides)
+      store(x, at, out)(shading.r, shading.g, shading.b)
+
+    /** The pixel (x, y) of n × n samples (n > 1), encoded, stored as (x, at) through `out`. */
     private def sampledEncoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
       samples(shading, x, y, inRange = true)((r, g, b) => store(x, at, out)(r, g, b))
 

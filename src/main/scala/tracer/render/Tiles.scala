@@ -36,15 +36,26 @@ private[render] object Tiles:
   inline def foreach(columns: Int, y: Int, count: Int)(
       inline pixel: (Int, Int, Int) => Unit
   ): Unit =
-    // Why: three counted loops, tiles, their rows, their columns.
+    runs(columns, y, count) { (from, until, row, i) =>
+      // Why: a counted loop over the run's columns.
+      var x = from
+      while x < until do
+        pixel(x, row, i)
+        x += 1
+    }
+
+  /** Calls `run(from, until, y, i)` for every run of a tile's row, in [[foreach]]'s order: the
+    * columns `from` until `until` of row `y`, the task's row `i`.
+    */
+  inline def runs(columns: Int, y: Int, count: Int)(
+      inline run: (Int, Int, Int, Int) => Unit
+  ): Unit =
+    // Why: two counted loops, tiles and their rows.
     var from = 0
     while from < columns do
       val until = Math.min(columns, from + Width)
       var i     = 0
       while i < count do
-        var x = from
-        while x < until do
-          pixel(x, y + i, i)
-          x += 1
+        run(from, until, y + i, i)
         i += 1
       from = until
