@@ -200,7 +200,7 @@ final class Mesh(
     *
     * Perf: made on first use only, by the general path (a mesh inside a placement or a CSG
     * element): a mesh at the top of a scene is tested by its own tree, which keeps the planes in
-    * its leaf order, and shading derives a face's normal from its corners ([[faceNormal]]), so
+    * its leaf order, and shading reads a face's normal from there, so
     * a 1.3M-face mesh does not hold a second 41 MB copy (docs/performance.md, round 7).
     */
   lazy val planes: IArray[Double] = Mesh.planesOf(vertices, corners)
