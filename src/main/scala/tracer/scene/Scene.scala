@@ -174,10 +174,14 @@ final case class Surface(
     emission: Colour = Colour.Black
 ):
   /** True when the surface has a highlight (phong or specular). */
-  def highlighted: Boolean = phong > 0 || specular > 0
+  val highlighted: Boolean = phong > 0 || specular > 0
 
-  /** True when the surface glows (some channel of its emission is above 0). */
-  def emits: Boolean = emission.max > 0
+  /** True when the surface glows (some channel of its emission is above 0).
+    *
+    * Perf: worked out once, not on every hit the shading colours (the emission's `max` was 0.3%
+    * of a 4K mesh run's samples; docs/performance.md, round 50).
+    */
+  val emits: Boolean = emission.max > 0
 
 /** The defaults of [[Surface]]'s version 2 parameters. */
 object Surface:
