@@ -136,7 +136,7 @@ object Renderer:
     */
   private abstract class Frame:
     /** Rows `y` until `y + count` of the picture, written as rows from `at` through `out` (from
-      * [[Bitmap.byRows]]), a tile at a time ([[Tiles.foreach]]).
+      * [[Bitmap.byRows]]), a tile at a time ([[Tiles.foreach]], [[Tiles.runs]]).
       */
     def rows(at: Int, y: Int, count: Int, out: PixelWriter): Unit
 
@@ -234,7 +234,7 @@ object Renderer:
     private def sampledEncoded(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
       samples(shading, x, y, inRange = true)((r, g, b) => store(x, at, out)(r, g, b))
 
-    /** Pixel (x, y) of the picture as [[linearRow]] gives it, stored as (x, at) through `out`. */
+    /** Pixel (x, y) of the picture as [[linearRows]] gives it, stored as (x, at) through `out`. */
     private def linear(shading: Shading, x: Int, y: Int, at: Int, out: PixelWriter): Unit =
       if n == 1 then
         centre(shading, x, y)

@@ -223,7 +223,9 @@ final class Shading(world: World, mode: ShadingMode):
       )(dx, dy, dz, depth)
       k += 1
 
-  /** Adds to red, green and blue what light `k` gives the point, as [[lit]] says. */
+  /** Adds to red, green and blue what light `k` gives the point, as [[lit]] says, from the
+    * direction toward the light and its distance that [[lit]] left in `toward`.
+    */
   private def light(
       k: Int,
       i: Int,

@@ -44,8 +44,8 @@ private[render] object Tiles:
         x += 1
     }
 
-  /** Calls `run(from, until, y, i)` for every run of a tile's row, in [[foreach]]'s order: the
-    * columns `from` until `until` of row `y`, the task's row `i`.
+  /** Calls `run(from, until, row, i)` for every run of a tile's row, in [[foreach]]'s order: the
+    * columns `from` until `until` of picture row `row` = `y + i`, the task's row `i`.
     */
   inline def runs(columns: Int, y: Int, count: Int)(
       inline run: (Int, Int, Int, Int) => Unit

@@ -31,7 +31,7 @@ class BvhProperties extends ScalaCheckSuite:
   private val gridPoint = for x <- Gen.choose(-4, 4); y <- Gen.choose(-4, 4); z <- Gen.choose(-4, 4)
   yield Vec3(x, y, z)
 
-  private lazy val plane: Gen[Shape] =
+  private val plane: Gen[Shape] =
     for n <- Gen.oneOf(Vec3.UnitX, Vec3.UnitY, Vec3(1, 1, 0)); d <- Gen.choose(-6, 6)
     yield Plane.at(n, d)
 

@@ -122,14 +122,57 @@ class HitsProperties extends ScalaCheckSuite:
       }
     }
 
-  test("a mesh in a world has a tree to take its faces' normals from"):
+  test("a mesh in a world has its own tree to take its faces' normals from"):
     val corners = IArray(0.0, 0, 0, 1, 0, 0, 0, 1, 0)
+    val mesh    = Mesh(corners, IArray(0, 1, 2))
     val world   = World(
       Scene(
         Camera(Vec3(0, 0, -20), Vec3.Zero),
-        objects =
-          List(SceneObject(Sphere(Vec3.Zero, 1)), SceneObject(Mesh(corners, IArray(0, 1, 2))))
+        objects = List(SceneObject(Sphere(Vec3.Zero, 1)), SceneObject(mesh))
       )
     )
     assert(world.treeOf(0).isEmpty)
-    assert(world.treeOf(1).isDefined)
+    assert(world.treeOf(1).exists(tree => world.meshTree(mesh).exists(_ eq tree)))
+
+  test("a mesh of many leaves: each face's normal from its tree has Mesh.plane's bits"):
+    // A 12 × 12 grid of squares on a bump, two faces a square: a tree whose leaves hold the faces
+    // in an order of their own, so a normal read at the face's number instead fails.
+    val n        = 12
+    val vertices = for j <- 0 to n; i <- 0 to n yield Vec3(i, 0.3 * Math.sin(i * 0.7 + j), j)
+    def at(i: Int, j: Int) = j * (n + 1) + i
+    val corners            =
+      for
+        j <- 0 until n; i <- 0 until n
+        c <- List(
+          at(i, j),
+          at(i + 1, j),
+          at(i, j + 1),
+          at(i + 1, j),
+          at(i + 1, j + 1),
+          at(i, j + 1)
+        )
+      yield c
+    val mesh  = Mesh(IArray.from(vertices.flatMap(v => List(v.x, v.y, v.z))), IArray.from(corners))
+    val world =
+      World(Scene(Camera(Vec3(6, 20, 6), Vec3(6, 0, 6.5)), objects = List(SceneObject(mesh))))
+    world.treeOf(0) match
+      case None       => fail("a mesh at the top of a scene has a tree")
+      case Some(tree) =>
+        assert((0 until mesh.faceCount).exists(f => tree.leafFace(f) != f))
+        (0 until mesh.faceCount).foreach { f =>
+          val expected = Mesh.plane(mesh.vertices, mesh.corners, f)((x, y, z, _) => List(x, y, z))
+          val read     = tree.faceNormal(f)((x, y, z) => List(x, y, z))
+          assert(expected.zip(read).forall(bits(_, _)), s"face $f: $read, not $expected")
+        }
+        // And the shading's hit on each face, from above, is Shape.hitAt's.
+        val query = world.newQuery()
+        (0 until mesh.faceCount).foreach { f =>
+          val centre = (0 until 3).map(k => mesh.vertex(mesh.corners(3 * f + k))).reduce(_ + _) / 3
+          val ray    = Ray(centre + Vec3(0.01, 10, 0.02), -Vec3.UnitY)
+          assertEquals(world.nearest(ray, query), 0)
+          val o = ray.origin
+          val d = ray.direction
+          Hits.record(mesh, o.x, o.y, o.z, d.x, d.y, d.z, query.distance, query, world.treeOf(0))
+          val hit = Shape.hitAt(mesh, ray, query.distance)
+          assert(same(hit.normal, query.nx, query.ny, query.nz), s"face $f")
+        }

@@ -38,6 +38,7 @@ class KernelBytecodeSuite extends munit.FunSuite:
     ),
     "tracer.render.Bvh" -> List(
       "nearest",
+      "nearestOfOne",
       "occluded",
       "anyBlocks",
       "itemBlocks",
@@ -45,14 +46,16 @@ class KernelBytecodeSuite extends munit.FunSuite:
       "ownBlocks",
       "bufferItems"
     ),
-    "tracer.render.Bvh$"         -> List("faceItems"),
-    "tracer.render.MeshTree"     -> List("nearest", "occludedBelow", "faceDistance", "faceBlocks"),
-    "tracer.render.MeshTree$"    -> List("layFace"),
-    "tracer.render.Shading"      -> List("trace", "traceFrom", "shade", "light", "lit", "mirror"),
-    "tracer.render.Shadows"      -> List("pointToward", "buffered"),
-    "tracer.render.Hits$"        -> List("record"),
-    "tracer.render.LightBuffer"  -> List("cell", "face"),
-    "tracer.render.LightBuffer$" -> List(
+    "tracer.render.Bvh$"       -> List("faceItems"),
+    "tracer.render.MeshTree"   -> List("nearest", "occludedBelow", "faceDistance", "faceBlocks"),
+    "tracer.render.MeshTree$"  -> List("layFace"),
+    "tracer.render.Shading"    -> List("trace", "traceFrom", "shade", "light", "lit", "mirror"),
+    "tracer.render.Shadows"    -> List("pointToward", "buffered"),
+    "tracer.render.Hits$"      -> List("record"),
+    "tracer.render.Projection" -> List("directions"),
+    "tracer.render.Renderer$WhittedFrame" -> List("rows", "aimed"),
+    "tracer.render.LightBuffer"           -> List("cell", "face"),
+    "tracer.render.LightBuffer$"          -> List(
       "build",
       "sorted",
       "classify",
