@@ -42,6 +42,11 @@ final class Bvh(
   private val fast: Option[BvhLanes] =
     if lanes(wide.size) then Some(BvhLanes(wide, prims)) else None
 
+  /** The tree built for each of the `count` shapes that is one of this hierarchy's meshes, by
+    * the shape's index (see [[Primitives.treesByShape]]).
+    */
+  private[render] def meshTrees(count: Int): Array[Option[MeshTree]] = prims.treesByShape(count)
+
   /** The tree built for `mesh`, one of this hierarchy's shapes (see [[Primitives.treeOf]]). */
   private[render] def meshTree(mesh: Mesh): Option[MeshTree] = prims.treeOf(mesh)
 

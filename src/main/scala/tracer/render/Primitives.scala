@@ -117,6 +117,17 @@ final class Primitives(
   /** The number of primitives. */
   def size: Int = order.length
 
+  /** The tree built here for each of the scene's `count` shapes that is one of these primitives'
+    * meshes, by the shape's index; None for every other shape.
+    */
+  private[render] def treesByShape(count: Int): Array[Option[MeshTree]] =
+    val trees = Array.fill[Option[MeshTree]](count)(None)
+    kind.indices.foreach { k =>
+      if kind(k) == Primitives.MeshKind then
+        trees(index(k)) = Some(meshes(data(Primitives.Stride * k).toInt))
+    }
+    trees
+
 /** The layout of [[Primitives]] and its leaf tests. */
 object Primitives:
   /** Doubles per primitive. */

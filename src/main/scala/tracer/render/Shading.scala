@@ -20,11 +20,8 @@ final class Shading(world: World, mode: ShadingMode):
   private var red   = 0.0
   private var green = 0.0
   private var blue  = 0.0
-  // Perf: where the lights stand, three doubles each, and the shaded point's direction toward
-  // each light and its distance, four doubles each, filled by `lit` for all lights before any
-  // is used (see there).
-  private val lightPoints =
-    world.lights.iterator.flatMap(l => Iterator(l.location.x, l.location.y, l.location.z)).toArray
+  // Perf: the shaded point's direction toward each light and its distance, four doubles a
+  // light, filled by `lit` for all lights before any is used (see there).
   private val toward = new Array[Double](4 * world.lights.length)
 
   /** The colour seen along `ray`, allowing `depth` more reflections or refractions. */
@@ -198,7 +195,8 @@ final class Shading(world: World, mode: ShadingMode):
     // Perf: each light's direction is a square root and three divisions, waited on by the rest
     // of its light; computed for all lights first, in a loop whose turns do not depend on each
     // other, the processor overlaps them (profiles of mesh-20000; docs/performance.md, round 50).
-    var j = 0
+    val lightPoints = world.lightPoints
+    var j           = 0
     while j < world.lights.length do
       val tx    = lightPoints(3 * j) - s0x
       val ty    = lightPoints(3 * j + 1) - s0y

@@ -55,13 +55,18 @@ final class World(
   // The shapes the hierarchy left out for having no bounds: the builder asked each shape once.
   private val unbounded = Primitives(shapes.toIndexedSeq, bvh.unbounded)
   // Each shape's mesh tree (None for a shape that is not a mesh), found once.
-  private val trees: Array[Option[MeshTree]] = shapes.map {
-    case mesh: Mesh => bvh.meshTree(mesh)
-    case _          => None
-  }
+  private val trees = bvh.meshTrees(shapes.length)
 
   /** The lights, in document order. */
   val lights: IArray[Light] = IArray.from(scene.lights)
+
+  /** Where the lights stand, three doubles a light (x, y, z), in the order of [[lights]].
+    *
+    * Perf: read by the shading for every shaded point (Shading.lit), without a `Light` and a
+    * `Vec3` to reach per light.
+    */
+  private[render] val lightPoints: Array[Double] =
+    lights.iterator.flatMap(l => Iterator(l.location.x, l.location.y, l.location.z)).toArray
 
   // Perf: every area light's sub-light positions centre + offset(u, v), computed once a world
   // and shared by every row task and both integrators (x, y, z at 3(u·samplesB + v); empty for a
